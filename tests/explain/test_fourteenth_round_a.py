@@ -70,7 +70,7 @@ def test_what_a_step_found_is_referred_to_by_its_number(name, lang):
 BY_NUMBER = [("seed_c5_1_6_belt", {"en": "found in Step 2 through the *belt*", "es": "hallada en el paso 2 a través de la *correa*"}),
              ("seed_c5_e5_unequal_wheels", {"en": "found in Step 3 through the *wheel of radius R*",
                                             "es": "hallada en el paso 3 a través de la *rueda de radio R*"}),
-             ("seed_c5_e6_bicycle", {"en": "found in Step 3 through the *chain*", "es": "hallada en el paso 3 a través de la *cadena*"}),
+             ("seed_c5_e6_bicycle", {"en": "found in Step 4 through the *chain*", "es": "hallada en el paso 4 a través de la *cadena*"}),
              ("seed_c5_2_1_tricycle", {"en": "the wheel C1 (rear left) found in Step 1",
                                        "es": "rueda C1 (trasera izquierda) hallada en el paso 1"}),
              ("seed_001_rolling_pair", {"en": "m/s, found in Step 3.", "es": "m/s, hallada en el paso 3."})]
@@ -80,7 +80,8 @@ BY_NUMBER = [("seed_c5_1_6_belt", {"en": "found in Step 2 through the *belt*", "
 @pytest.mark.parametrize("lang", ("en", "es"))
 def test_the_steps_named_by_hand(name, said, lang):
     """C5-1.6's moving pulley gets its ω through the belt in Step 2 (the only step after the
-    arm's), E.5's wheel 1 in Step 4 (its own step), E.6's chainring in Step 3 (the chain's);
+    arm's), E.5's wheel 1 in Step 4 (its own step), E.6's chainring in Step 4 (the chain's,
+    after the front wheel's since round 27b);
     C5-2.1 has one step; 001's contact point F is written in Step 3 (the roller's)."""
     assert said[lang] in page(name, lang)
 

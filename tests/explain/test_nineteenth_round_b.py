@@ -114,7 +114,9 @@ def test_rolling_read_off_has_no_bare_length(name: str, lang: str) -> None:
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_inclined_wheels_roll_with_r(lang: str) -> None:
-    """C5-1.2: each wheel (radius r = 1 m, in Data) rolls on its plane, ω = −|v_O| / r."""
+    """C5-1.2: each wheel (radius r = 1 m, in Data) rolls on its plane; since round 27b its ω is
+    read off its vector equation about the contact, the arm K1O being the radius r:
+    ω = −|v_OK1| / K1O = −|v_O| / r = −2.91 rad/s."""
     page = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang)
-    assert re.search(r"= −\|v_O\| / r = −2[.,]91 rad/s", page), lang
-    assert re.search(r"= −\|v_Q\| / r = −2[.,]91 rad/s", page), lang
+    assert re.search(r"= −\|v_OK1\| / K1O = −2[.,]91 rad/s", page), lang
+    assert re.search(r"= −\|v_QK2\| / K2Q = −2[.,]91 rad/s", page), lang

@@ -15,7 +15,7 @@ from kinematika.explain.document import CentreNote, Derived, Equation, Msg, Sect
 
 from tests.conftest import sampled
 
-from .helpers import blocks, explained, num, section
+from .helpers import blocks, explained, num, rendered, section
 
 
 
@@ -53,12 +53,13 @@ def test_identical_planets_are_each_worked(name, original, repeated):
 
 def test_the_centres_section_holds_what_is_asked():
     """C5-1.4 asks the instant centre of one planet: the notes place it from the centres of
-    the carrier and the ring (both at O) and the points A1 and Q, and say nothing of the other
-    planets' centres. The planet's centres relative to the carrier and the ring (at A1, at Q)
-    are named as points in its note, not listed as lines of their own (ninth round). The
-    planet's note stands in the velocity step, after the equations that find v_A1 and v_Q
-    (round 20e), at the head of the planet's own step (round 22a); the centres section says
-    where it is placed."""
+    the carrier and the ring (both at O) and the points A1 and Q; "el CIR de cada rodeta s'ha
+    de trobar entre els dos": the other planets, of its kind, are found the same way, each from
+    its own centre in its own step (round 27b), and the answers list only the asked one. The
+    planet's centres relative to the carrier and the ring (at A1, at Q) are named as points in
+    its note, not listed as lines of their own (ninth round). The planet's note stands in the
+    velocity step, after the equations that find v_A1 and v_Q (round 20e), at the head of the
+    planet's own step (round 22a); the centres section says where it is placed."""
     _, doc = explained("seed_c5_1_4_epicyclic")
     centres = blocks(section(doc, "sec.centres"))
     assert any(getattr(b, "key", "") == "centres.placed_in_step" and str(b.args["centre"].sub) == "ground,planet1"
@@ -66,7 +67,11 @@ def test_the_centres_section_holds_what_is_asked():
     notes = [b for b in centres + blocks(section(doc, "sec.velocities")) if isinstance(b, CentreNote)]
     pairs = {frozenset(n.pair) for n in notes}
     assert frozenset(("ground", "planet1")) in pairs
-    assert not any(pair & {"planet2", "planet3"} for pair in pairs)
+    assert {pair for pair in pairs if pair & {"planet2", "planet3"}} == {frozenset(("ground", "planet2")),
+                                                                        frozenset(("ground", "planet3"))}
+    answers = rendered("seed_c5_1_4_epicyclic", "en", drawings=False).split("## Answers")[1]
+    assert "instant centre of *planet 1*" in answers
+    assert "instant centre of *planet 2*" not in answers and "instant centre of *planet 3*" not in answers
     placed = next(n for n in notes if frozenset(n.pair) == frozenset(("ground", "planet1")))
     assert {frozenset(("ground", k)) for k in placed.via} <= pairs
     assert not {frozenset((k, "planet1")) for k in placed.via} & pairs
@@ -298,9 +303,10 @@ def _meet(p1, d1, p2, d2):
 def test_a_rate_nobody_asks_is_not_worked_out():
     """C5-1.2 asks the centres of OQ, OJ and the left wheel, ω of OJ and v_J: the notes place
     OQ's centre where the normals to the planes through the wheels' centres meet, and never
-    work out how fast the wheels turn. No equation turns with a wheel, no ω of a wheel is read
-    off anything, the rates' table and the step's title leave the wheels out; what is asked
-    equals the construction by hand: O and Q at r along the planes' normals from contacts
+    work out how fast the wheels turn. The readers asked for the wheels' rates (round 17a) and
+    for a vector equation wherever a step finds a rate (round 27b): each wheel's ω is read off
+    v_O = v_{K1∈wheel} + ω × K1O right after its centre's velocity, in the bar's step, and
+    nothing else turns with a wheel; what is asked equals the construction by hand: O and Q at r along the planes' normals from contacts
     s = 3 from the corner (the model's Data: at 2 the wheels overlapped), I_OQ where the normals meet, I_OJ on the line I_OQ–O and the
     vertical through J = (−5, 2), ω_OJ = ω_OQ·|I_OQ O| / |I_OJ O| turned the other way
     (O lies between the two centres), v_J = ω_OJ × I_OJ J."""
@@ -308,22 +314,21 @@ def test_a_rate_nobody_asks_is_not_worked_out():
 
     sol, doc = explained("seed_c5_1_2_bar_on_inclined_wheels")
     velocities = blocks(section(doc, "sec.velocities"))
-    for eq in (b for b in velocities if isinstance(b, Equation)):
-        assert not turning_bodies(eq) & {"wheel1", "wheel2"}, eq.target.sym
-    # the wheels' rates, which two readers asked for, are read off their rolling (seventeenth
-    # round (a)): ω = −|v_O| / r, never in a velocity equation, each in a step of its own after
-    # the bars' (round 24d: the summary only collects)
+    turning = [eq for eq in velocities if isinstance(eq, Equation) and turning_bodies(eq) & {"wheel1", "wheel2"}]
+    assert [(str(eq.target.sym.sub), turning_bodies(eq)) for eq in turning] == [("O", {"wheel1"}), ("Q", {"wheel2"})]
+    # the wheels' rates, which two readers asked for (seventeenth round (a)), each read off its
+    # equation in the step that finds its centre's velocity (round 24d: the summary only
+    # collects; round 27b: by the vector equation, as every step finds a rate)
     summary = next(s for s in doc.sections if s.title.key.startswith("sec.rates_summary"))
     wheel_rates = {d.body: d for d in doc.derived() if d.body in ("wheel1", "wheel2")}
     assert set(wheel_rates) == {"wheel1", "wheel2"}
     assert not any(any(d is b for b in summary.leaves()) for d in wheel_rates.values())
+    step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].items])
+    assert [n.text for n in step.title.args["bodies"].items] == ["OQ", "wheel1", "wheel2"]
     for body, d in wheel_rates.items():
-        own = next(s for s in steps(doc) if [n.text for n in s.title.args["bodies"].items] == [body])
-        assert any(d is b for b in own.leaves()), body
+        assert any(d is b for b in step.leaves()), body
     table = next(b for b in summary.blocks if hasattr(b, "rows"))
     assert [r[0].text for r in table.rows] == ["wheel1", "wheel2", "OQ", "OJ"]   # the planes are ground (welded to it)
-    step = next(s for s in steps(doc) if "OQ" in [n.text for n in s.title.args["bodies"].items])
-    assert [n.text for n in step.title.args["bodies"].items] == ["OQ"]
     # by hand
     c30, s30, c45 = math.sqrt(3) / 2, 0.5, math.sqrt(2) / 2
     s = 3.0

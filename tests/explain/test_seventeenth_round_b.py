@@ -61,9 +61,10 @@ def test_the_readers_cases_by_hand() -> None:
     names «Velocities»."""
     page = rendered("seed_c5_1_4_epicyclic", "en", "md", drawings=False)
     assert "With the angular velocities found in “Velocities”, (7·ω − ω) / (−ω − ω) = −3" in page
-    # the steps whose equations draw the polygon's black arrows (nineteenth round (d)): Step 5's
-    assert "the relative velocities of the equations of Step 5, head to tail" in page
-    ca = rendered("seed_c5_1_4_epicyclic", "ca", "md", drawings=False)
-    assert "de les equacions del pas 5" in ca
+    # the steps whose equations draw the polygon's black arrows (nineteenth round (d)): none
+    # since round 27b (every planet turns about its centre, the sun about O); C5-E.6's Step 4
+    assert "of the equations of Step" not in page
+    ca = rendered("seed_c5_e6_bicycle", "ca", "md", drawings=False)
+    assert "les velocitats relatives de les equacions del pas 4" in ca
     eu = rendered("seed_c5_1_7_semicylinder", "eu", "md", drawings=False)
     assert "1. urratseko ekuazioen terminoak" in eu

@@ -60,12 +60,13 @@ def test_each_side_of_a_rigid_relation_is_one_bodys(name):
 
 def test_the_epicyclic_planet_by_hand():
     """C5-1.4, step 5: the planet 2 touches the sun at K and the ring at S (the contacts J, K,
-    N, Q, S, U: M is the equations' mark, fourteenth round (b)); its ω from both contacts,
-    each point of the planet: v_S∈rodeta2 = v_K∈rodeta2 + v_SK, with the two contact
-    equalities said in the contacts' sentences."""
+    N, Q, S, U: M is the equations' mark, fourteenth round (b)); since round 27b it is found as
+    planet 1 is, from the carrier and the ring: its centre between A2 and S, then its ω at S,
+    each term a point of the planet: v_S∈rodeta2 = v_I_rodeta2 + v_S,I_rodeta2, with the
+    contact equality said in the contact's sentence; never v_S∈corona = v_K∈central + …."""
     ca = rendered("seed_c5_1_4_epicyclic", "ca", "md", drawings=False)
-    assert "v_{S∈rodeta2}  =  v_{K∈rodeta2}  +  v_SK" in ca
-    assert "v_{K∈rodeta2} = v_{K∈central}." in ca and "v_{S∈rodeta2} = v_{S∈corona}." in ca
+    assert "v_{S∈rodeta2}  =  v_{I_rodeta2}  +  v_{S,I_rodeta2}" in ca
+    assert "v_{S∈rodeta2} = v_{S∈corona}." in ca
     assert "v_{S∈corona}  =  v_{K∈central}" not in ca
 
 
@@ -200,15 +201,16 @@ def test_the_fixed_strand_is_said_fixed_once(lang):
 @pytest.mark.parametrize("lang", LANGS)
 def test_the_upper_wheels_step_uses_the_centres_point(lang):
     """C5-E.4: I_upper is placed by U and by N (on the left wheel: the contacts J, K, N, Q, M
-    being the equations' mark); the step reads ω_upper at N, v_N∈upper = v_P + v_NP, not at
-    its mirror Q."""
+    being the equations' mark), not by its mirror Q. Since round 27b the step finds ω_upper as
+    the accelerations do, seen from the chassis, and P's velocity follows from U's,
+    v_P = v_U + v_PU = 0: neither v_NP nor v_QP is written."""
     text = rendered("seed_c5_e4_upper_wheel", lang, "md", drawings=False)
     centres = text.split("\n## ")[[s.split("\n")[0] for s in text.split("\n## ")].index(
         {"en": "Instant centres", "es": "Centros instantáneos de rotación (CIR)",
          "ca": "Centres instantanis de rotació (CIR)", "eu": "Biraketa-zentro instantaneoak"}[lang])]
     assert " N " in centres and " Q " not in centres
-    assert re.search(r"v_\{N∈[^}]*\}  =  v_P  \+  v_NP", text)
-    assert "v_QP" not in text
+    assert re.search(r"v_P  =  v_U  \+ +v_PU", text)
+    assert "v_QP" not in text and "v_NP" not in text
 
 
 # ---- 5. the fraction ----------------------------------------------------------------------

@@ -49,8 +49,9 @@ def test_the_subscripts_legend_is_a_sentence(name, lang):
     assert not any(line.startswith(OLD_LEGEND) for line in text.splitlines())
     for line in text.splitlines():
         if line.startswith(LEGEND[lang]):
-            # ω's shortened subscripts first, then what v_{J∈b} is (nineteenth round (c))
-            assert line.endswith(".") and re.search(r": (ω_|v_\{\w+∈)", line), line
+            # ω's shortened subscripts first (or the symbol the model's notation writes a rate
+            # with, C5-2.1's ψ̇: round 27b), then what v_{J∈b} is (nineteenth round (c))
+            assert line.endswith(".") and re.search(r": (ω_|v_\{\w+∈|ψ̇ )", line), line
             assert not re.search(r"ω_\S+:", line), line
 
 

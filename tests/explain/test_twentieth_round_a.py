@@ -52,26 +52,27 @@ def test_bicycle_front_wheel_by_hand(lang: str) -> None:
     """C5-E.6: the frame translates (ω = α = 0), so F moves as H, whose motion is given:
     v_F = v_H = (v, 0), a_F = a_H = (v̇, 0); F moves on a straight line parallel to the road,
     so a_F has no normal part and α = −v̇/R_wheel, read off a_F's x component (twenty-fifth
-    round d: a_F = −α·R_wheel)."""
+    round d: a_F = −α·JF); since round 27b the front wheel's step writes its vector equations,
+    v_F = v_J + v_FJ and a_F = α × JF, as the rear wheel's does."""
     page = rendered("seed_c5_e6_bicycle", lang)
     assert re.search(r"v_F = v_H = \(v[,;] 0\)", page)
     assert re.search(r"a_F = a_H = \(v̇[,;] 0\)", page)
     assert "|a_F^t|" not in page
-    assert page.index("v_F = v_H") < page.index(": v_F = −ω_")
+    assert page.index("v_F = v_H") < page.index(": v_FJ = −ω_")
     assert page.index("a_F = a_H") < page.index(": a_F = −α_")
 
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_inclined_wheels_right_wheel_centre_written(lang: str) -> None:
     """C5-1.2: Q moves with the bar OQ about I_OQ, so v_Q = v_{I_OQ} + v_{Q,I_OQ} is written
-    (in the bar's step, round 24d) before ω of the right wheel is read off |v_Q|, and both
-    before the table of rates."""
+    (in the bar's step, round 24d) before ω of the right wheel is read off its equation about
+    the contact K2 (v_Q = v_{K2∈wheel} + v_QK2, round 27b), and both before the table of rates."""
     page = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang)
     at = page.index("v_{Q,I_OQ} = ω_OQ × I_{OQ}Q = ")
-    assert at < page.index("|v_Q| /")
+    assert at < page.index("|v_QK2| /")
     # the table comes after the last line read off
-    table = page.index("| --- | --- |", page.index("|v_Q| /") - 3000)
-    assert table > page.index("|v_Q| /")
+    table = page.index("| --- | --- |", page.index("|v_QK2| /") - 3000)
+    assert table > page.index("|v_QK2| /")
 
 
 @over(name=SEEDS, lang=LANGS)

@@ -42,9 +42,10 @@ def test_spanish_a_wheel_rolls(name):
 
 
 def test_spanish_the_wheels_roll_on_the_planes():
-    """C5-1.2: both wheels, the reader's example ("La rueda izquierda gira sin deslizar")."""
-    text = plain("seed_c5_1_2_bar_on_inclined_wheels", "es")
-    assert "La rueda izquierda rueda sin deslizar sobre el plano izquierdo" in text
+    """The reader's example ("La rueda izquierda gira sin deslizar", C5-1.2's idle line, gone
+    since round 27b: the wheels are read off their equations): C5-E.6's front wheel."""
+    text = plain("seed_c5_e6_bicycle", "es")
+    assert "La rueda delantera rueda sin deslizar sobre el suelo" in text
 
 
 def test_spanish_plural_wheels_roll():
@@ -117,7 +118,9 @@ def test_catalan_diada_in_a_four_bar():
 
 def test_catalan_contact_point_before_its_name():
     text = plain("seed_c5_1_2_bar_on_inclined_wheels", "ca")
-    assert re.search(r"el punt de contacte K1 n’és el CIR", text)     # twenty-first round (a)
+    # twenty-first round (a); the idle line "el punt de contacte K1 n’és el CIR" gone since
+    # round 27b, the centres' line says it
+    assert re.search(r"el punt de contacte K1 \(rodolament sense lliscament\)", text)
 
 
 # ---- 6.–8. the example's own words -------------------------------------------------------------

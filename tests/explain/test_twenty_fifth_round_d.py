@@ -84,7 +84,7 @@ def test_d_the_bicycle_rear_wheel_by_hand() -> None:
     pages = {lang: rendered("seed_c5_e6_bicycle", lang, drawings=False) for lang in LANGS}
     assert "along x: a_H = −α_{rear wheel}·GH ⇒ α_{rear wheel} = −v̇/R_wheel" in pages["en"]
     assert "along x: v_HG = −ω_{rear wheel}·GH ⇒ ω_{rear wheel} = −v/R_wheel" in pages["en"]
-    assert "along x: a_F = −α_{front wheel}·R_wheel ⇒ α_{front wheel} = −v̇/R_wheel" in pages["en"]
+    assert "along x: a_F = −α_{front wheel}·JF ⇒ α_{front wheel} = −v̇/R_wheel" in pages["en"]    # its own equation (round 27b)
     assert "segons x: a_H = −α_{roda posterior}·GH ⇒ α_{roda posterior} = −v̇/R_roda" in pages["ca"]
     assert "según x: a_H = −α_{rueda trasera}·GH ⇒ α_{rueda trasera} = −v̇/R_rueda" in pages["es"]
     assert "x norabidean: a_H = −α_{atzeko gurpila}·GH ⇒ α_{atzeko gurpila} = −v̇/R_gurpila" in pages["eu"]
@@ -94,14 +94,17 @@ def test_d_the_bicycle_rear_wheel_by_hand() -> None:
 
 def test_d_the_cavity_and_an_oblique_arm_by_hand() -> None:
     """C5-E.1: the wheels' centre C is R below the contact J (JC = (0, −R)) and a_C^t =
-    (−2·R·θ̈, 0): α k × (0, −R) = (α·R, 0), so along x a_C^t = α·JC, α = −2·θ̈. C5-E.4: the
-    upper wheel's arm PN is oblique, v_NP = (…, v/2) and PN's x component is −R/2: along y
-    v/2 = ω·(−R/2), ω = −v/R, written "−ω·(R/2)"."""
+    (−2·R·θ̈, 0): α k × (0, −R) = (α·R, 0), so along x a_C^t = α·JC, α = −2·θ̈. An oblique
+    arm (C5-E.4's PN before round 27b, whose upper wheel is now composed from the chassis):
+    C5-1.4's second planet, its centre 2r/5 from A2 along 30°, so I₂S = (3r/5)(cos 30°, sin 30°)
+    = (3√3·r/10, 3r/10); v_S = 3rω at −60°: (3rω/2, −3√3·rω/2); along x 3rω/2 = −ω₂·(3r/10),
+    ω₂ = −5ω, written "−ω·(3·r/10)"."""
     e1 = rendered("seed_c5_e1_cavity", "en", drawings=False)
     assert "along x: a_C^t = α_wheels·JC ⇒ α_wheels = −2·θ̈" in e1
     assert "along x: v_CJ = ω_wheels·JC ⇒ ω_wheels = −2·θ̇" in e1
-    e4 = rendered("seed_c5_e4_upper_wheel", "en", drawings=False)
-    assert "along y: v_NP = −ω_{upper wheel}·(R/2) ⇒ ω_{upper wheel} = −v/R" in e4
+    planets = rendered("seed_c5_1_4_epicyclic", "en", drawings=False)
+    assert ("I_{planet2}S = (3·√3·r/10, 3·r/10); along x: v_{S,I_planet2} = −ω_planet2·(3·r/10) "
+            "⇒ ω_planet2 = −5·ω") in planets
 
 
 def test_d_numeric_pages_keep_the_magnitude() -> None:

@@ -87,19 +87,21 @@ def test_d_the_intrinsic_working_comes_before_the_answers() -> None:
 
 
 def test_d_the_wheels_are_steps_of_their_own() -> None:
-    """C5-E.6 and C5-1.2, the readers' words: "4. The *front wheel*, from the *ground* and
-    the *frame*." in the order, a Step 4 for it in the velocities and the accelerations, v_F
-    and a_F written in the frame's step; v_Q = v_{I_OQ} + v_{Q,I_OQ} in Step 1 of C5-1.2."""
+    """C5-E.6 and C5-1.2, the readers' words: "3. The *front wheel*, from the *ground* and
+    the *frame*." in the order, a step for it in the velocities and the accelerations (Step 3
+    since round 27b: the step the solution finds it in, with the vector equations the rear
+    wheel's step writes), v_F and a_F written in the frame's step; v_Q = v_{I_OQ} + v_{Q,I_OQ}
+    in Step 1 of C5-1.2, the right wheel's ω read off v_Q = v_{K2∈wheel} + v_QK2 right after."""
     parts = _parts("seed_c5_e6_bicycle", "en")
-    assert "4. The *front wheel*, from the *ground* and the *frame*." in parts["sec.structure"]
-    for level, line in (("sec.velocities", "along x: v_F = −ω_{front wheel}·R_wheel ⇒ ω_{front wheel} = −v/R_wheel"),
-                        ("sec.accelerations", "along x: a_F = −α_{front wheel}·R_wheel ⇒ α_{front wheel} = −v̇/R_wheel")):
-        step = parts[level].split("### Step 4: the *front wheel*\n")[1]
+    assert "3. The *front wheel*, from the *ground* and the *frame*." in parts["sec.structure"]
+    for level, line in (("sec.velocities", "along x: v_FJ = −ω_{front wheel}·JF ⇒ ω_{front wheel} = −v/R_wheel"),
+                        ("sec.accelerations", "along x: a_F = −α_{front wheel}·JF ⇒ α_{front wheel} = −v̇/R_wheel")):
+        step = parts[level].split("### Step 3: the *front wheel*\n")[1].split("### Step 4")[0]
         assert line in step, level
         assert ("v_F = v_H" if level == "sec.velocities" else "a_F = a_H") in parts[level].split("### Step 2")[0]
     es = _parts("seed_c5_e6_bicycle", "es")["sec.structure"]
-    assert re.search(r"^4\. La \*rueda delantera\*, a partir del \*suelo\* y del \*cuadro\*\.$", es, flags=re.M), es
+    assert re.search(r"^3\. La \*rueda delantera\*, a partir del \*suelo\* y del \*cuadro\*\.$", es, flags=re.M), es
     bar = _parts("seed_c5_1_2_bar_on_inclined_wheels", "en")["sec.velocities"]
     step1 = bar.split("### Step 2")[0]
     assert "v_Q  =  v_{I_OQ}  +   v_{Q,I_OQ}" in step1
-    assert "ω_{right wheel} = −|v_Q| / r = −2.91 rad/s" in bar.split("### Step 4: the *right wheel*\n")[1]
+    assert step1.index("v_Q  =  v_{I_OQ}") < step1.index("ω_{right wheel} = −|v_QK2| / K2Q = −2.91 rad/s")

@@ -16,6 +16,7 @@ from typing import Any, Literal, Optional, overload
 from ..questions.centres import all_centres, centre_line, same_line
 from .asked import worked
 from .context import Ctx
+from .kin import kin
 from .kinds import guided, knife_edge, line_kind, on_fixed_line, roller, rolls
 from .document import CentreNote, Msg, Name, Section, Sym, msg
 
@@ -223,8 +224,20 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
             deps[key] = [frozenset(p) for k in note.via for p in ((a, k), (k, b))
                          if (note.how == "kennedy" and not note.perps) or ctx.frame in p]
     asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in worked(ctx).centres}
+    asked |= kin_centres(ctx, asked)
     ctx.centre_notes = (made, _chosen(ctx, made, deps, asked), asked)
     return ctx.centre_notes
+
+
+def kin_centres(ctx: Ctx, asked: set[frozenset]) -> set[frozenset]:
+    """The centres relative to the frame of the bodies of one kind (`kin.kin`) with a body
+    whose centre relative to the frame is asked: the notes find each planet's centre the same
+    way ("el CIR de cada rodeta s'ha de trobar entre els dos", C5-1.4), and a page that
+    placed the first planet's centre and then read the second's rate off the sun wrote one
+    kind of body two ways (issue 30, twenty-seventh round (b)). Each such centre is placed
+    as the asked one is, in its body's step; the answers list only what is asked."""
+    return {frozenset((ctx.frame, k)) for key in asked if ctx.frame in key
+            for b in key if b != ctx.frame for k in kin(ctx, b)}
 
 
 def centres_first(ctx: Ctx, steps: Optional[list] = None) -> bool:
@@ -371,6 +384,10 @@ def _parallel(ctx: Ctx, note: CentreNote) -> bool:
             note.how = "parallel"
             note.side = "between" if vp[0] * vq[0] + vp[1] * vq[1] < 0 else "outside"
             note.witnesses = [(p, ctx.clean(speeds[p], "speed")), (q, ctx.clean(speeds[q], "speed"))]
+            # each point named as the steps write its velocity, seen from the reference: the
+            # sentence says whose points move relative to what (round 27b: C5-1.5's "respecte
+            # del terra, T4 es mou amb (0; 2·v)" named neither the pulley nor the symbol)
+            note.symbols = [Sym("v", ctx.point_label(x, b) if a == ctx.frame else f"{x}∈{b}/{a}") for x in (p, q)]
             note.arm = ctx.clean(tuple(c - x for c, x in zip(where, ctx.pos(q))), "len")
             note.distance = ctx.clean(_length(ctx, note.arm), "len")
             return True

@@ -42,6 +42,7 @@ class Ctx:
         self.slides_seen: dict[tuple, Any] = {}  # (level, body, guide body) -> a slide's symbol written in the steps
         self.centre_first_memo: Optional[bool] = None    # the centres before the velocities (`centres.centres_first`)
         self.found_order: dict[frozenset, tuple] = {}    # a step's bodies -> (bodies, sources) as its equations find and read them
+        self.kin_reads: dict[tuple, frozenset] = {}      # (level, centres, body) -> the known bodies its rate's equation read (`group`)
 
     # positions -----------------------------------------------------------------------------
     def pos(self, name: str) -> tuple:

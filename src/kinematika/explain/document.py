@@ -316,6 +316,7 @@ class CentreNote:
     step: Optional[int] = None                     # rate: the step that found ω (builder.refer_rates)
     near: str = ""                                 # proportional with pivots: the witness `distance` is from
     slips: list = field(default_factory=list)      # proportional with pivots: each witness's no-slip reason (Msg) or None
+    symbols: list = field(default_factory=list)    # parallel: each witness's velocity as the steps write it (v_{T4∈pulley3})
 
 
 @dataclass(frozen=True)

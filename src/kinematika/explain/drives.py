@@ -31,6 +31,7 @@ from typing import Any, Optional
 from .context import Ctx, alpha_sym, composed, omega_sym
 from .document import Derived, Inline, Name, Sym, Value, msg
 from .kinds import pins, rolls, welds
+from .needs import accelerations_asked
 
 
 @dataclass(frozen=True)
@@ -171,8 +172,12 @@ def pair_blocks(ctx: Ctx, bodies: list[str], known: set[str], level: str) -> tup
     roda petita respecte del xassís és immediata, i una composició de moviments permet
     obtenir-la respecte del terra"): the relation seen from the carrier, then the rates
     (`Pair`); at accelerations the relation differentiated (C5-E.4's α = v̇/R). At
-    velocities not for a wheel whose instant centre the structure placed first: the notes
-    turn it about that centre (C5-E.4's P)."""
+    velocities not for a wheel whose instant centre the structure placed first, on a page of
+    velocities alone: the notes turn it about that centre. Where accelerations are explained
+    the velocities compose too, so that the wheel is found one way at both levels (issue 30,
+    twenty-seventh round (b): C5-E.4's upper wheel turned about P at velocities and composed
+    from the chassis at accelerations); P's velocity then follows from U's (v_P = v_U + ω × UP
+    = 0, the notes' "(→v) + (←v) = 0 ⇒ P = CIR")."""
     out: list = []
     found: set[str] = set()
     have = set(known) | {ctx.frame}
@@ -182,7 +187,7 @@ def pair_blocks(ctx: Ctx, bodies: list[str], known: set[str], level: str) -> tup
         a, b = (d.a, d.b) if d.a in have else (d.b, d.a) if d.b in have else (None, None)
         if a is None or b not in bodies or b in found:
             continue
-        if level == "v" and b in ctx.centre_sites.values():
+        if level == "v" and b in ctx.centre_sites.values() and not accelerations_asked(ctx):
             continue
         out += _pair(ctx, d, a, b, level)
         found.add(b)
@@ -253,11 +258,15 @@ def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:
                        b if k is None else "", kind, sense))
     if k is not None:
         out.append(Derived(sym(b), [rel_b, " + ", sym(d.holder)], ctx.value(get(b), unit), b, kind, sense))
-    if k is not None:                  # the run translates with its holder: ω_run = ω_K, listed (round 20g)
-        out.append(Derived(sym(d.line), [sym(d.holder), " ", msg("how.translates", body=Name(d.holder, "body"))],
+    # the run translates with its holder: ω_run = ω_K, listed (round 20g); the sentence says it
+    # is the straight run that translates, not the belt (round 27b: a teacher names the part)
+    run = Name(d.line, "body")
+    if k is not None:
+        out.append(Derived(sym(d.line), [sym(d.holder), " ", msg("how.translates", body=Name(d.holder, "body"), line=run)],
                            ctx.value(get(d.line), unit), d.line, kind, sense))
     else:
-        out.append(Derived(sym(d.line), [msg("how.translation")], ctx.value(get(d.line), unit), d.line, kind, sense))
+        out.append(Derived(sym(d.line), [msg("how.run_translates", line=run)], ctx.value(get(d.line), unit), d.line,
+                           kind, sense))
     return out
 
 

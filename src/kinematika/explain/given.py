@@ -73,3 +73,14 @@ def speeding(ctx: Ctx, rate: Any, accel: Any) -> Optional[bool]:
         return None             # a symbol may have either sign (C5-E.1's θ̇, θ̈: "any value")
     product = sign_of(ctx, rate) * sign_of(ctx, accel)
     return None if product == 0 else product > 0
+
+
+def driven(ctx: Ctx, d: Any) -> list[str]:
+    """The bodies whose motion a driver states (every carrier of a shared point)."""
+    if d.kind == "omega":
+        return [d.body]
+    if d.kind == "joint":
+        j = ctx.model.joint(d.joint)
+        return [b for b in (j.a, j.b) if b != ctx.frame]
+    point = d.point.point
+    return ctx.model.carriers(point) if ctx.shared(point) else [d.point.body]

@@ -39,6 +39,7 @@ from .order import jointed
 from .contacts import geometric_blocks
 from .drives import drive_blocks, pair_blocks
 from .given import whole_along
+from .kin import kin
 from .kinds import (by_centre_path, meshes, roller, crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls,
                     same_rate, slider, welds)
 from .terms import contact_term, guide, point_term, rotation_terms, slide_terms
@@ -157,6 +158,7 @@ class Planner:
         self.group = [b for b in group if b != ctx.frame]
         self.determined = set(known) | {ctx.frame}
         self.rates = set(self.determined) | set(rates or ())       # rates known (a drive's)
+        self.composed = set(rates or ()) - set(known)       # a drive or a pair gave them: not turned about a centre
         self.full: set[str] = set()                 # labels of points whose motion is known
         self.partial: dict[str, dict] = {}          # label -> {"wheel": joint, "driver": driver}
         self.slides: set[str] = set()               # slots and guides whose relative speed is known
@@ -180,6 +182,9 @@ class Planner:
         self._glides()
         self._given()
         self._propagate()
+        # known before any equation (a driven bar about its centre placed first: C5-1.2's OQ),
+        # so named first where the step's bodies are listed as found (`record_found`)
+        self.at_once = [b for b in self.group if b in self.determined]
 
     def _centred(self) -> None:
         """At accelerations, a wheel rolling on a fixed body is reached through its centre C:
@@ -281,10 +286,12 @@ class Planner:
     def _centres(self) -> None:
         """The instant centres placed before the velocities (`centres.centre_sites`): each a
         point of its body with zero velocity, where routes may start (v_A = v_I14 + ω × I14-A,
-        the notes' rotation about the centre); a body whose centre is at infinity translates."""
+        the notes' rotation about the centre); a body whose centre is at infinity translates.
+        Not the centre of a body whose rate a drive or a pair gave (`composed`): its points
+        follow from its pin, as at accelerations (C5-E.4's v_P = v_U + ω × UP, round 27b)."""
         group = set(self.group)
         for name, body in self.ctx.centre_sites.items():
-            if body in group and body not in self.determined:
+            if body in group and body not in self.determined and body not in self.composed:
                 site = Site(name, body)
                 if site not in self.sites[body]:
                     self.sites[body].append(site)
@@ -534,10 +541,40 @@ class Planner:
         order = {id(p): i for i, p in enumerate(found)}
         def key(p: Path) -> tuple:      # a rotation about a point at rest finds ω alone, as the notes do
             rest = self._from_rest(p)
-            return (self._across_tangent(p), not p.finds, len(p.routes), self._off_centre(p), -self._via_centre(p), not rest, p.turns,
+            return (self._across_tangent(p), self._unlike(p), not p.finds, len(p.routes), self._off_centre(p),
+                    -self._via_centre(p), not rest, p.turns,
                     p.unknowns if rest else -p.unknowns, self._against(p), -self._end_rank(p), -self._witnessed(p),
                     order[id(p)])
         return min(found, key=key)
+
+    def reads(self, p: Path) -> frozenset:
+        """The known bodies the equation writes points of, other than those it finds: the
+        frame for an instant centre at rest, the body of each known end or start, and the
+        bodies pinned there (A1 of the carrier for A1 of the planet)."""
+        out: set[str] = set()
+        for s in [p.end] + [r.start for r in p.routes]:
+            if p.known[s][0] == "none":
+                continue
+            if s.point in self.ctx.centre_sites:
+                out.add(self.ctx.frame)
+                continue
+            label = self.label(s)
+            out |= {b for b in self.determined if b == s.body or any(self.label(x) == label for x in self.sites[b])}
+        return frozenset(out - set(p.finds))
+
+    def _unlike(self, p: Path) -> int:
+        """How many bodies the equation finds from other bodies than the equation that found
+        one of their kind read (`kin.kin`, recorded by `step` in `Ctx.kin_reads`): bodies of
+        one kind are found from the same bodies, by the same equation (issue 30, round 27b:
+        C5-1.4's second planet was read off the sun, the first found from the carrier and the
+        ring, as the notes find each planet)."""
+        reads = self.reads(p)
+        n = 0
+        for b in p.finds:
+            seen = [self.ctx.kin_reads.get((self.level, self.centred_steps, k)) for k in kin(self.ctx, b)]
+            if any(r is not None and not reads <= r for r in seen) and not any(r is not None and reads <= r for r in seen):
+                n += 1
+        return n
 
     def _witnessed(self, p: Path) -> int:
         """How many of the equation's points placed the instant centre of a body it finds
@@ -637,6 +674,8 @@ class Planner:
         if path is None:
             return None
         self.events.append(path)
+        for b in path.finds:        # what its kind's next one is found from (`_unlike`)
+            self.ctx.kin_reads.setdefault((self.level, self.centred_steps, b), self.reads(path))
         self.full.add(self.label(path.end))
         for r in path.routes:
             self.full.add(self.label(r.start))
@@ -1430,8 +1469,10 @@ def group_blocks(ps, step) -> Optional[list]:
 def record_found(ctx: Ctx, step, plan: Planner, known: set[str], rank: dict[str, int], given: bool) -> None:
     """Records the order in which the plan's events find the step's bodies (a line's tangency,
     a rate carried, an equation's ω) and read its sources (`_reads`), for the order of
-    solution and the step's title (`order.as_found`): a body or source no event names keeps
-    its place after those that are named — the order changes, never the lists. A step whose
+    solution and the step's title (`order.as_found`): a body known before any equation comes
+    first (`Planner.at_once`: C5-1.2's driven bar OQ, before the wheels found from its
+    points' velocities, round 27b); a body or source no event names keeps its place after
+    those that are named — the order changes, never the lists. A step whose
     rates a drive or a gear pair gave first (`given`: the drive's sentence reads the carrier
     and the known wheel in its own order) keeps its sources' order."""
     found: list[str] = []
@@ -1440,7 +1481,7 @@ def record_found(ctx: Ctx, step, plan: Planner, known: set[str], rank: dict[str,
             found.append(ev.body)
         elif isinstance(ev, Path):
             found += ev.finds
-    bodies = [b for b in dict.fromkeys(found) if b in step.bodies]
+    bodies = [b for b in dict.fromkeys(plan.at_once + found) if b in step.bodies]
     bodies += [b for b in step.bodies if b not in bodies]
     read = [] if given else [b for b in _sources(ctx, plan.events, known, rank, True) if b in step.known]
     ctx.found_order[frozenset(step.bodies)] = (bodies, read + [b for b in step.known if b not in read])

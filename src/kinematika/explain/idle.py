@@ -1,7 +1,9 @@
-"""Bodies the question does not need: a moving body the structure lists whose rate no step
-works out (C5-1.2's two wheels, C5-1.4's third planet, C5-E.6's front wheel). A student
-who reads the structure table asks for it, so the page says it once, the way the notes
-would, after the table of rates (round 17a):
+"""Bodies no step works out: a moving body the structure lists whose rate no equation of
+the steps finds. Since round 27b a listed body keeps the equation its step finds its rate
+with (`needs.listed_bodies`: C5-1.2's two wheels, C5-1.4's third planet and C5-E.6's front
+wheel are written as their kind is, with their vector equations), so what is left here is
+the fallback for a body the planner never reaches. A student who reads the structure table
+asks for it, so the page says it once, the way the notes would (round 17a):
 
 - a body rolling without slipping on a fixed one, its centre a point whose velocity the
   page knows: its contact is its instant centre, so ω = |v_O| / r (the notes' "el CIR
@@ -25,6 +27,7 @@ from typing import Any, Optional
 
 from .context import Ctx, alpha_sym, omega_sym, radius_formula, read_along, read_off, segment
 from .document import Derived, Name, Names, Sym, Value, centre_point, msg
+from .kin import placing
 from .kinds import rolls
 
 
@@ -188,9 +191,9 @@ def _symmetric(ctx: Ctx, b: str, worked: list[str], accel: bool) -> Optional[Idl
     """ω_b = ω_w of a worked body w placed like b: the same round shapes and the same kinds
     of joint with the same bodies, and the same angular velocity (C5-1.4's third planet,
     like the first)."""
-    mine = _placing(ctx, b)
+    mine = placing(ctx, b)
     for w in worked:
-        if w == b or _placing(ctx, w) != mine or not ctx.is_zero(ctx.omega(b) - ctx.omega(w), "rate"):
+        if w == b or placing(ctx, w) != mine or not ctx.is_zero(ctx.omega(b) - ctx.omega(w), "rate"):
             continue
         if accel and not ctx.is_zero(ctx.alpha(b) - ctx.alpha(w), "rate2"):
             continue
@@ -202,12 +205,4 @@ def _symmetric(ctx: Ctx, b: str, worked: list[str], accel: bool) -> Optional[Idl
                                not ctx.symbolic))
         return IdleStep(b, out, acc, [w])
     return None
-
-
-def _placing(ctx: Ctx, b: str) -> tuple:
-    """What places body b: its round shapes' radii and its joints' kinds with the bodies they
-    join it to, as a sorted tuple."""
-    radii = sorted(str(ctx.clean(s.radius, "len")) for s in ctx.inst.shapes.get(b, []) if hasattr(s, "radius"))
-    joints = sorted((j.kind.name, j.b if j.a == b else j.a) for j in ctx.model.joints if b in (j.a, j.b))
-    return tuple(radii), tuple(joints)
 

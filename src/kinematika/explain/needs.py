@@ -5,11 +5,11 @@ A forward evaluation in the velocity or acceleration steps (v_P = v_Q + ω × QP
 known) is kept when its point is asked (its velocity, acceleration, curvature, intrinsic
 components or composition), when a later equation uses it as a known term, or when an
 instant centre is found from it; the others are dropped, last first, so that a chain of
-points nobody needs goes as a whole. An equation that finds only the rate (ω or α) of a body
-nobody asks about, whose rate no later step uses, goes too, with the value read off it and
-its row of the rates' table (C5-1.2: the notes place the wheels' centres at their contacts
-and never work out how fast they turn); other equations that find an unknown (a slide, a
-point) always stay. A model without questions asks for everything, and keeps everything.
+points nobody needs goes as a whole. An equation that finds the rate (ω or α) of a moving
+body the structure lists stays, as if asked (`listed_bodies`: the student who reads the
+table asks for every row, round 17a, and a body's step is written the way its kind is,
+round 27b); other equations that find an unknown (a slide, a point) always stay. A model
+without questions asks for everything, and keeps everything.
 """
 from __future__ import annotations
 
@@ -53,11 +53,12 @@ def prune(ctx: Ctx, doc: Document) -> None:
     if ctx.model.default_questions:
         return
     kept = _snapshot(doc.sections)
-    unworked = _prune(ctx, doc, _asked_bodies(ctx))
+    wanted = _asked_bodies(ctx) | listed_bodies(ctx)
+    unworked = _prune(ctx, doc, wanted)
     halves = unworked.get("a", set()) - unworked.get("v", set())
     if halves:                  # ω worked, α not: the table would show a hole — work α out too
         _restore(kept)
-        unworked = _prune(ctx, doc, _asked_bodies(ctx) | halves)
+        unworked = _prune(ctx, doc, wanted | halves)
     steps, idle, rated = _idle(ctx, doc, unworked.get("v", set()))
     centres = frozenset(s.centre for s in steps if s.centre)
     if centres:
@@ -65,7 +66,7 @@ def prune(ctx: Ctx, doc: Document) -> None:
         # of the body that carries it, as that step wrote it (C5-1.2's v_Q = v_{I_OQ} +
         # v_{Q,I_OQ} in Step 1, round 24d), not a line of the wheel's own step
         _restore(kept)
-        unworked = _prune(ctx, doc, _asked_bodies(ctx) | halves, centres)
+        unworked = _prune(ctx, doc, wanted | halves, centres)
         steps, idle, rated = _idle(ctx, doc, unworked.get("v", set()))
     _drop_rows(doc, unworked.get("v", set()), unworked.get("a", set()) - rated, keep=rated)
     for step in steps:
@@ -77,6 +78,16 @@ def prune(ctx: Ctx, doc: Document) -> None:
                 # the value it finds is listed
                 at = next((k for k, b in enumerate(s.blocks) if isinstance(b, Table)), len(s.blocks))
                 s.blocks[at:at] = idle
+
+
+def listed_bodies(ctx: Ctx) -> set[str]:
+    """The moving bodies the structure table lists: each keeps the equation its step finds
+    its rate with, as if asked, written the way the step writes its kind (issue 30,
+    twenty-seventh round (b): C5-E.6's front wheel read "its contact point J is its instant
+    centre, so: v_F = −ω·R_wheel" beside the rear wheel's vector equation; C5-1.4's third
+    planet "by symmetry" beside the first one's centre and equation). A body whose rate no
+    step finds is left to `idle`."""
+    return {b for b in ctx.model.moving_bodies if not ctx.fixed(b)}
 
 
 def _idle(ctx: Ctx, doc: Document, unworked: set[str]) -> tuple[list, list, set[str]]:
@@ -338,13 +349,18 @@ def _point_of(label: str) -> str:
 def _used_after(doc: Document, sec: Section) -> tuple[set[str], set[tuple]]:
     """What the rest of the document uses: the point names of instant centres found from a
     point's velocity, and the (v|a, label) of the known point terms of its equations (the
-    geometric contact point's v_J^geom = v_S + …, a composition's drag a_S + …)."""
+    geometric contact point's v_J^geom = v_S + …, a composition's drag a_S + …). A centre
+    placed in a velocity step reads its witnesses' velocities too, which that section then
+    keeps (round 27b: C5-1.4's second planet's centre "A2 moves at (−r·ω, √3·r·ω)" with v_A2
+    never written)."""
     names: set[str] = set()
     terms: set[tuple] = set()
     started = False
     for s in doc.sections:
         if s is sec:                       # what the section itself needs, `_prune_section` finds
             started = True
+            names.update(w[0] for b in s.leaves() if isinstance(b, CentreNote) for w in b.witnesses
+                         if isinstance(w[0], str))
             continue
         if not started:
             continue

@@ -19,7 +19,7 @@ from .said_first import conditions_first
 from .shared import shared_rates
 from .higher import higher_pair_steps
 from .contacts import geometric_blocks
-from .given import sign_of, heading, speeding, whole_along
+from .given import driven, sign_of, heading, speeding, whole_along
 from .kinds import kind_key, meshes, pin_only, roller, rolls, turns
 from .order import Step, as_found, merge_vehicles
 from .structure import step_title
@@ -405,7 +405,7 @@ class PlanarSteps:
         ctx = self.ctx
         if self.level == "v":                   # its instant centre, placed before the velocities
             for name, b in ctx.centre_sites.items():
-                if b == body:
+                if b == body and f"drive:{body}" not in ctx.worked:     # a composed rate: from its pin
                     return name, body
         written: dict[str, tuple[str, str]] = {}
         for label in sorted(self.done):
@@ -464,17 +464,6 @@ class PlanarSteps:
 def split_segment(seg: str) -> tuple[str, str]:
     """The two point names of a segment written by `segment` (AB, OA1; `context.split_pair`)."""
     return split_pair(seg)
-
-
-def driven(ctx: Ctx, d) -> list[str]:
-    """The bodies whose motion a driver states (every carrier of a shared point)."""
-    if d.kind == "omega":
-        return [d.body]
-    if d.kind == "joint":
-        j = ctx.model.joint(d.joint)
-        return [b for b in (j.a, j.b) if b != ctx.frame]
-    point = d.point.point
-    return ctx.model.carriers(point) if ctx.shared(point) else [d.point.body]
 
 
 def joint_rate_sym(ctx: Ctx, joint_id: str, level: str) -> Sym:

@@ -1148,7 +1148,14 @@ check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
     }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades a «{ sec-velocities }», { $values }: coincideixen.
-how-translates = (es trasllada respecte { ELISION($body) ->
+how-run_translates = (el tram recte { ELISION($line) ->
+        [vowel] d’{ $line }
+       *[other] de { $line }
+    } es trasllada)
+how-translates = (el tram recte { ELISION($line) ->
+        [vowel] d’{ $line }
+       *[other] de { $line }
+    } es trasllada respecte { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     })
@@ -1173,7 +1180,10 @@ drive-relation_a = Derivant, amb els radis constants: { $equation }{ $radii ->
 drive-relation = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
-    }, que porta els dos eixos, els eixos són fixos i { $line } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que les seves perifèries tenen la mateixa velocitat, { $equation }{ $radii ->
+    }, que porta els dos eixos, els eixos són fixos i el tram recte { ELISION($line) ->
+        [vowel] d’{ $line }
+       *[other] de { $line }
+    } es trasllada: no llisca sobre { $a } ni sobre { $b }, de manera que les seves perifèries tenen la mateixa velocitat, { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(amb { $radii })
     }:
@@ -1188,17 +1198,23 @@ centre-line-normal = la normal comuna al contacte { $point } (els sòlids llisqu
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = el terra
 # un CIR a partir de dues velocitats paral·leles i perpendiculars a la recta dels seus punts (la construcció proporcional dels apunts)
-centre-parallel-between = respecte { ELISION($frame) ->
+centre-parallel-between = els punts { $p } i { $q } { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } es mouen, respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $dist } { ELISION($q) ->
+    }, amb { $sp } = { $vp } i { $sq } = { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la, a { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }:
-centre-parallel-outside = respecte { ELISION($frame) ->
+centre-parallel-outside = els punts { $p } i { $q } { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } es mouen, respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }, { $p } es mou amb { $vp } i { $q } amb { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $dist } { ELISION($q) ->
+    }, amb { $sp } = { $vp } i { $sq } = { $vq }, totes dues perpendiculars a la recta que passa per { $p } i { $q }. Al llarg d’aquesta recta la velocitat varia linealment, proporcional a la distància al CIR, i aquestes dues tenen el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la, a { $dist } { ELISION($q) ->
         [vowel] d’{ $q }
        *[other] de { $q }
     }:

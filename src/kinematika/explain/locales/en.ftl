@@ -809,7 +809,8 @@ check-willis = Willis' formula: seen from { $carrier }, the train is an ordinary
        *[other] , with { $r1 } and { $r2 }
     }. With the angular velocities found in “{ sec-velocities }”, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } slips on neither { $a } nor { $b }: { $equation }, so { $ratio }; with the angular velocities found in “{ sec-velocities }”, { $values }: they agree.
-how-translates = (it translates relative to { $body })
+how-translates = (the straight run of { $line } translates relative to { $body })
+how-run_translates = (the straight run of { $line } translates)
 pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(with { $radii })
@@ -822,7 +823,7 @@ drive-relation_a = Differentiating, with the radii constant: { $equation }{ $rad
         [0] {""}
        *[other] {" "}(with { $radii })
     }:
-drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and { $line } translates: it slips on neither { $a } nor { $b }, so both move it at one speed, { $equation }{ $radii ->
+drive-relation = Seen from { $holder }, which carries both axles, the axles are fixed and the straight run of { $line } translates: it slips on neither { $a } nor { $b }, so both move it at one speed, { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(with { $radii })
     }:
@@ -834,7 +835,7 @@ centre-line-normal = the common normal at the contact { $point } (the bodies sli
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = ground
 # a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
-centre-parallel-between = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
-centre-parallel-outside = relative to { $frame }, { $p } moves at { $vp } and { $q } at { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:
+centre-parallel-between = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
+centre-parallel-outside = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, towards { $point }: { $sym } = { $value }

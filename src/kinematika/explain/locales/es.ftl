@@ -745,7 +745,8 @@ check-willis = Fórmula de Willis: vista desde { $carrier }, el tren es ordinari
        *[other] , con { $r1 } y { $r2 }
     }. Con las velocidades angulares halladas en «{ sec-velocities }», { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas en «{ sec-velocities }», { $values }: coinciden.
-how-translates = (se traslada respecto de { $body })
+how-translates = (el tramo recto de { $line } se traslada respecto de { $body })
+how-run_translates = (el tramo recto de { $line } se traslada)
 pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(con { $radii })
@@ -758,7 +759,7 @@ drive-relation_a = Derivando, con los radios constantes: { $equation }{ $radii -
         [0] {""}
        *[other] {" "}(con { $radii })
     }:
-drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que sus periferias tienen la misma velocidad, { $equation }{ $radii ->
+drive-relation = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos y el tramo recto de { $line } se traslada: no desliza sobre { $a } ni sobre { $b }, así que sus periferias tienen la misma velocidad, { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(con { $radii })
     }:
@@ -770,7 +771,7 @@ centre-line-normal = la normal común en el contacto { $point } (los sólidos de
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = el suelo
 # un CIR a partir de dos velocidades paralelas y perpendiculares a la recta de sus puntos (la construcción proporcional de los apuntes)
-centre-parallel-between = respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $q }:
-centre-parallel-outside = respecto de { $frame }, { $p } se mueve con { $vp } y { $q } con { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $q }:
+centre-parallel-between = los puntos { $p } y { $q } de { $body } se mueven, respecto de { $frame }, con { $sp } = { $vp } y { $sq } = { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $q }:
+centre-parallel-outside = los puntos { $p } y { $q } de { $body } se mueven, respecto de { $frame }, con { $sp } = { $vp } y { $sq } = { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $q }:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, hacia { $point }: { $sym } = { $value }

@@ -659,7 +659,8 @@ check-willis = Willisen formula: { $carrier } solidotik ikusita, trena arrunta d
        *[other] , { $r1 } eta { $r2 } izanik
     }. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
 check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; «{ sec-velocities }» atalean aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
-how-translates = ({ $body } solidoarekiko traslatzen da)
+how-translates = ({ $line } solidoaren zati zuzena { $body } solidoarekiko traslatzen da)
+how-run_translates = ({ $line } solidoaren zati zuzena traslatzen da)
 pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}({ $radii } izanik)
@@ -672,7 +673,7 @@ drive-relation_a = Deribatuz, erradioak konstanteak direnez: { $equation }{ $rad
         [0] {""}
        *[other] {" "}({ $radii } izanik)
     }:
-drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoa traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, bien periferiek abiadura bera dute, { $equation }{ $radii ->
+drive-relation = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira eta { $line } solidoaren zati zuzena traslatzen da: ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean; beraz, bien periferiek abiadura bera dute, { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}({ $radii } izanik)
     }:
@@ -684,7 +685,7 @@ centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gain
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = lurra
 # zentro bat, bi puntuen zuzenarekiko perpendikularrak diren bi abiadura paralelotatik (apunteen eraikuntza proportzionala)
-centre-parallel-between = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
-centre-parallel-outside = { $frame } solidoarekiko, { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
+centre-parallel-between = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
+centre-parallel-outside = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, { $point } punturantz: { $sym } = { $value }

@@ -148,6 +148,7 @@ class Renderer(ABC):
         which labels it writes."""
         self._written: set[str] = set()
         self._rated: set[str] = set()        # bodies whose own symbol (ω_X, α_X, I_X) is written
+        self._noted: dict[str, None] = {}     # bodies whose ω the model's notation writes otherwise (ψ̇), as written
         self._rating = False
         self._member: Optional[tuple[str, str]] = None   # the first v_{J∈b} written (`subscripts`)
         self._members: dict[str, str] = {}   # each body written after ∈, at its first point (`subscripts`)
@@ -602,6 +603,8 @@ class Renderer(ABC):
         spelt = self.wording.symbol(rate_key("omega" if s.base == "ω" else "alpha", *parts[:2]), self.lang)
         if spelt is None:
             return s
+        if s.base == "ω" and len(parts) == 1 and hasattr(self, "_noted"):
+            self._noted.setdefault(parts[0], None)      # the notation line defines it (`subscripts`)
         w = written_name(spelt)
         return Sym(w.base, w.sub, w.sup or s.sup, s.vector, fixed=True)
 
@@ -638,9 +641,12 @@ class Renderer(ABC):
             if written is not None and b not in getattr(self, "_rated", written):
                 continue          # ω_X the page never writes needs no legend (a body written
                 # after ∈ only is defined below, with its point)
-            if self._plain(b, label, spelt):
+            if self._plain(b, label, spelt) and b not in self._noted:
                 continue          # the name as written, its own code (ω_N of *N blokea*), or
-                # its words run together (ω_politja1 of *politja 1*): nothing to define
+                # its words run together (ω_politja1 of *politja 1*): nothing to define — unless
+                # the model's notation writes its ω otherwise (C5-2.1's ψ̇ for ω_xassís): that
+                # symbol is defined here, before the steps write it (round 27b: ψ̇ was written
+                # in step 1's equation before the line "⇒ ψ̇ = ω_xassís = …")
             said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
             items += (["; "] if items else []) + [said]
             defined.add(b)
@@ -1058,9 +1064,11 @@ class Renderer(ABC):
             why = self.proportional(c)
         elif c.how == "parallel":
             (p, vp), (q, vq) = c.witnesses
+            sp, sq = c.symbols
             why = Msg(f"centre.parallel.{c.side}", {"p": Name(p), "q": Name(q), "vp": Value(vp, "speed"),
                                                    "vq": Value(vq, "speed"), "frame": self.frame_name(a),
-                                                   "dist": Value(c.distance, "len")})
+                                                   "dist": Value(c.distance, "len"), "body": Name(b, "body"),
+                                                   "sp": sp, "sq": sq})
         elif c.how == "field":
             why = Msg("centre.field", self.field_args(c, name))
         elif c.how == "rate":
