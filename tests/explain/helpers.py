@@ -4,15 +4,18 @@ from __future__ import annotations
 
 import base64
 import contextlib
+import copy
 import functools
 import inspect
 import itertools
 import math
 import re
+import sys
 import traceback
 from pathlib import Path
 from typing import Any
 
+import numpy as np
 import pytest
 
 import kinematika
@@ -27,6 +30,13 @@ ALL = sorted(p.stem for p in EXAMPLES.glob("*.yaml"))
 # the notes' examples of seeds 001 and 002, and the languages an explanation is written in
 SEEDS = sorted(p.stem for p in EXAMPLES.glob("seed_*.yaml"))
 LANGS = ("en", "es", "ca", "eu")
+
+# One module a process: the files of tests/explain import it as `.helpers`. Imported under a
+# second name as well (`tests.explain.helpers`: nine files did until stop 47) it is a second
+# module with caches of its own, and every example it serves is built, and every page drawn
+# and written, a second time (~22 s of CPU a run).
+_TWINS = [n for n, m in list(sys.modules.items()) if n != __name__ and getattr(m, "__file__", None) == __file__]
+assert not _TWINS, f"tests/explain/helpers.py imported as {__name__} and as {_TWINS}: import it as `.helpers`"
 
 
 # the example each document `explained` made is the explanation of (by the document's id)
@@ -84,6 +94,20 @@ def render_of(doc: Document, lang: str, fmt: str = "md", drawings: bool = True) 
     return render(doc, lang, fmt, drawings=drawings)
 
 
+def model_tree(name: str) -> dict:
+    """An example's model file as `yaml.safe_load` reads it (a copy the caller may change),
+    read once a run: the rules over the seeds' model texts read each file dozens of times, at
+    ~10 ms a read (PyYAML in Python)."""
+    return copy.deepcopy(_model_tree(name))
+
+
+@functools.lru_cache(maxsize=None)
+def _model_tree(name: str) -> dict:
+    import yaml
+
+    return yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))
+
+
 def num(sol: kinematika.Solution, x: Any) -> Any:
     """Floats (symbols at the solver's sample values)."""
     if isinstance(x, (tuple, list)):
@@ -138,12 +162,16 @@ NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
 
 
 # The pages whose label layouts are recorded while `rendered` writes them (the notes' seeds in
-# English and in Catalan, whose words are the longest; Markdown with its drawings), and what
-# was recorded, by (seed, language): {"labels": [(placed, tips, px) of each label layout,
-# display units], "polygons": [(layout, items, placed) of each polygon]}.
+# every language; Markdown with its drawings), and what was recorded, by (seed, language):
+# {"labels": [(placed, tips, px) of each label layout, display units], "polygons": [(layout,
+# items, placed) of each polygon], "drawings": [(placed, `Layout`) of each label layout of a
+# mechanism drawing, the lines drawn under it its `recorded_lines`], …: `_recording`}. The layout rules read English and Catalan, whose words
+# are the longest (`RECORDED_LANGS`); the drawn lines are read in all four.
 RECORDED_LANGS = ("en", "ca")
-RECORDED = frozenset((name, lang, "md", True) for name in NOTES_SEEDS for lang in RECORDED_LANGS)
+RECORDED = frozenset((name, lang, "md", True) for name in NOTES_SEEDS for lang in LANGS)
 _LAYOUTS: dict[tuple[str, str], dict[str, list]] = {}
+
+DRAWN = (0.5, 3.0)      # the board's weights of drawn lines (hatching 0.7, bars and outlines 1); arrows weigh 3
 
 
 @contextlib.contextmanager
@@ -151,18 +179,37 @@ def _recording():
     """Every label layout (`draw.labels.Layout.run`: a mechanism's or a polygon's labels) and
     every polygon's placement (`explain.render.svg._place`) made inside the block, appended to
     the dict it yields as they are made; each call returns what it returned (the page is
-    written as without the recording)."""
-    from kinematika.draw import labels
+    written as without the recording). A layout of a mechanism drawing (inside
+    `kinematika.draw.svg`, as `Drawing.svg` calls it) is also recorded as a drawing's, with
+    the lines drawn under its labels (`_lines_drawn`) as its `recorded_lines`."""
+    from kinematika import draw as draw_package
+    from kinematika.draw import labels, paint
     from kinematika.explain.render import svg as svg_module
 
-    found: dict[str, list] = {"labels": [], "polygons": [], "areas": [], "layouts": []}
-    run, place = labels.Layout.run, svg_module._place
+    found: dict[str, list] = {"labels": [], "polygons": [], "areas": [], "layouts": [], "drawings": []}
+    init, run, place = labels.Layout.__init__, labels.Layout.run, svg_module._place
+    paint_mark, svg = paint.paint_mark, draw_package.svg
+    drawing = [0]           # inside a mechanism drawing
+
+    def recorded_svg(*args, **kw):
+        drawing[0] += 1
+        try:
+            return svg(*args, **kw)
+        finally:
+            drawing[0] -= 1
+
+    def recorded_init(self, board, ax):
+        init(self, board, ax)
+        if drawing[0]:
+            self.recorded_lines = _lines_drawn(board, ax)
 
     def recorded_run(self):
         out = run(self)
         found["labels"].append((out, self.tips, self.px))
         found["areas"].append((out, self.areas))
         found["layouts"].append((out, self))
+        if hasattr(self, "recorded_lines"):
+            found["drawings"].append((out, self))
         return out
 
     def recorded_place(lay, items):
@@ -170,31 +217,51 @@ def _recording():
         found["polygons"].append((lay, items, out))
         return out
 
-    labels.Layout.run, svg_module._place = recorded_run, recorded_place
+    def recorded_paint_mark(cv, m):
+        if m.kind == "line" and (m.group or "").startswith(("kennedy:", "normal:")):
+            cv.board.__dict__.setdefault("construction", []).append(np.asarray(m.points, dtype=float))
+        return paint_mark(cv, m)
+
+    labels.Layout.__init__, labels.Layout.run, svg_module._place = recorded_init, recorded_run, recorded_place
+    paint.paint_mark, draw_package.svg = recorded_paint_mark, recorded_svg
     try:
         yield found
     finally:
-        labels.Layout.run, svg_module._place = run, place
+        labels.Layout.__init__, labels.Layout.run, svg_module._place = init, run, place
+        paint.paint_mark, draw_package.svg = paint_mark, svg
 
 
-def recorded_pages(kind: str) -> dict:
+def _lines_drawn(board, ax) -> list:
+    """The lines a mechanism drawing's labels lie over, as (display points (n, 2), body or ""
+    or "construction"): from the label board, its bodies' outlines, bars, rims and hatching
+    (`DRAWN`'s weights) with their bodies, and every construction line as painted (a
+    Kennedy line, a normal: `_recording`), whether or not the placer was told of it."""
+    owners = board.owners if len(board.owners) == len(board.obstacles) else [""] * len(board.obstacles)
+    lines = [(ax.transData.transform(line), owner) for (line, weight, _), owner in zip(board.obstacles, owners)
+             if DRAWN[0] <= weight < DRAWN[1] and len(line) >= 2]
+    return lines + [(ax.transData.transform(line), "construction") for line in getattr(board, "construction", [])]
+
+
+def recorded_pages(kind: str, langs: tuple = RECORDED_LANGS) -> dict:
     """What was recorded of `kind` ("labels", "polygons", "areas": each label layout's
-    placements and its bodies' areas, or "layouts": its placements and the `Layout` itself,
-    see `_LAYOUTS`) while each of the
-    notes' seeds was written in English and in Catalan (Markdown, with its drawings), a list
-    per (seed, language). The pages are `rendered`'s: each is drawn once a run, for the
+    placements and its bodies' areas, "layouts": its placements and the `Layout` itself, or
+    "drawings": the same of a mechanism drawing's layouts only; see `_LAYOUTS`)
+    while each of the notes' seeds was written in `langs` (Markdown, with its drawings), a
+    list per (seed, language). The pages are `rendered`'s: each is drawn once a run, for the
     figure tests and every other test that reads it."""
     for name in NOTES_SEEDS:
-        for lang in RECORDED_LANGS:
+        for lang in langs:
             rendered(name, lang, "md")
-    return {key: found[kind] for key, found in _LAYOUTS.items()}
+    return {(name, lang): _LAYOUTS[(name, lang)][kind] for name in NOTES_SEEDS for lang in langs}
 
 
 def over(**grids) -> Any:
     """A rule checked over a grid of pages as ONE test: `@over(name=SEEDS, lang=LANGS)` on a
     check taking `name` and `lang` (and any fixtures) runs it on every combination and fails
     once, naming every failing (seed, language) with its message. One test item a rule, not
-    76: pytest's collection, reports and setup for each item cost more than most checks."""
+    76: pytest's collection, reports and setup for each item cost more than most checks. A
+    grid given as a function is asked for its values when the test runs: one that needs the
+    examples solved (the numeric seeds) is not solved at collection, in every worker."""
     def wrap(check):
         params = inspect.signature(check).parameters
         here = inspect.getsourcefile(check)
@@ -202,7 +269,7 @@ def over(**grids) -> Any:
         assert not missing, f"{check.__name__} takes no {missing}"
 
         def test(**fixtures):
-            cases = list(itertools.product(*grids.values()))
+            cases = list(itertools.product(*(g() if callable(g) else g for g in grids.values())))
             failed = []
             for values in cases:
                 try:

@@ -19,7 +19,7 @@ from kinematika.draw.build import build_scene
 from kinematika.draw.geometry import Box
 from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
-from tests.explain.helpers import EXAMPLES, NOTES_SEEDS, over, recorded_pages, scratch_axes
+from .helpers import EXAMPLES, NOTES_SEEDS, over, recorded_pages, scratch_axes
 
 
 

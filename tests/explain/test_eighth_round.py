@@ -7,15 +7,14 @@ import re
 
 import pytest
 import sympy
-import yaml
 
 from kinematika.explain.document import Equation, Msg, Section
 
-from .helpers import EXAMPLES, LANGS, SEEDS, explained, rendered, section, words_of, over
+from .helpers import EXAMPLES, LANGS, SEEDS, explained, rendered, section, words_of, over, model_tree
 
 
 def _ask(name: str) -> list[dict]:
-    return yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))["ask"]
+    return model_tree(name)["ask"]
 
 
 def _asks_accelerations(name: str) -> bool:
@@ -39,7 +38,7 @@ def test_the_polygons_example_letter_is_no_symbol(lang):
 
 @over(name=SEEDS)
 def test_no_caption_letters_a_parameter(name):
-    parameters = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8")).get("parameters") or {}
+    parameters = model_tree(name).get("parameters") or {}
     page = rendered(name, "en", drawings=False)
     for used in re.findall(r"lettered as the point \((\w+) for (\w+)\)", page):
         assert used[0] not in parameters and used[0].upper() == used[1], (name, used)
@@ -93,7 +92,7 @@ def test_the_tricycle_asks_what_the_notes_ask():
 @over(name=SEEDS)
 def test_a_seed_names_no_acceleration_it_does_not_ask(name):
     """A seed's notation spells an α (C5-2.1's ψ̈) only where the page has accelerations."""
-    notation = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8")).get("notation") or {}
+    notation = model_tree(name).get("notation") or {}
     if any(str(k).startswith("alpha(") for k in notation):
         assert _asks_accelerations(name), name
 

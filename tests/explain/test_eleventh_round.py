@@ -11,7 +11,7 @@ import pytest
 
 from kinematika.model.subscripts import named_labels
 
-from .helpers import LANGS, SEEDS, rendered, over
+from .helpers import LANGS, SEEDS, rendered, over, model_tree
 
 # the words a centre placed between/beyond two parallel velocities ends with, by language
 # ("where the speed falls to zero, at ..."), up to the colon before its coordinates
@@ -92,10 +92,8 @@ def test_no_polygon_image_is_a_symbol_of_the_page(name, lang):
     """A polygon's image is its point's letter in lower case; when that letter is a
     parameter of the page (C5-E.6's crank axle C beside the wheelbase c) it is primed, c′,
     as O's image is o′ beside the pole o, and the caption says so."""
-    import yaml
 
-    from .helpers import EXAMPLES
-    model = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text())
+    model = model_tree(name)
     letters = {p for p in (model.get("parameters") or {}) if len(p) == 1 and p.islower()}
     page = rendered(name, lang, "html")
     labels = re.findall(r"<text[^>]*>([^<]*)</text>", page)

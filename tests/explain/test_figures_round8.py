@@ -20,7 +20,7 @@ from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
 
 from tests.draw.artists import axes
-from .helpers import EXAMPLES, LANGS, SEEDS, rendered, over
+from .helpers import EXAMPLES, LANGS, SEEDS, explained, rendered, over
 from .helpers import words_of as _words
 
 
@@ -94,7 +94,7 @@ ROLLS = {"ca": r"\* rodol(a|en)\b", "es": r"\* rueda(n)?\b", "en": r"\* rolls?\b
 
 def _straight_bodies(name: str, lang: str) -> list[str]:
     """The model's moving straight bodies (a line, no circle), as the page names them."""
-    sol = kinematika.solve(EXAMPLES / f"{name}.yaml")
+    sol, _ = explained(name)
     out = []
     for b, body in sol.model.bodies.items():
         kinds = {type(s).__name__ for s in body.shapes}

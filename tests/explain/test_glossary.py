@@ -13,7 +13,7 @@ import pytest
 import kinematika.explain as explain_package
 from kinematika.explain.catalogue import LOCALES
 
-from .helpers import EXAMPLES
+from .helpers import EXAMPLES, model_tree
 from .test_catalogues import messages
 
 GLOSSARY = Path(explain_package.__file__).resolve().parent / "glossary"
@@ -54,11 +54,10 @@ def test_the_glossary_catches_what_the_instructors_corrected():
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_the_notes_examples_name_their_bodies_by_the_glossary(lang):
-    import yaml
 
     avoid = [v for entry in glossary(lang).values() for v in entry["avoid"]]
     for path in sorted(EXAMPLES.glob("seed_*.yaml")) + sorted(EXAMPLES.glob("fan_*.yaml")):
-        names = (yaml.safe_load(path.read_text(encoding="utf-8")).get("names") or {}).get(lang) or {}
+        names = (model_tree(path.stem).get("names") or {}).get(lang) or {}
         words = " ".join([names.get("title", "")] + list(names.get("bodies", {}).values())
                          + list(names.get("points", {}).values()) + list(names.get("parameters", {}).values())
                          + list(names.get("data", [])) + list(names.get("notes", [])))

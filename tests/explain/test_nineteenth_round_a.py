@@ -15,7 +15,7 @@ import kinematika
 from kinematika.errors import KinematikaError
 from kinematika.explain import build, render
 
-from .helpers import EXAMPLES, LANGS, NOTES_SEEDS, over, rendered
+from .helpers import LANGS, NOTES_SEEDS, over, rendered, model_tree
 
 # the composition's old point-only form of the relative part (v_{rel,B}, a_{REL,B})
 POINT_ONLY = re.compile(r"\b[va]_\{(?:rel|REL),[^}]*\}")
@@ -49,7 +49,7 @@ def test_slides_coriolis_step_composition_answers_alike(lang: str) -> None:
 
 
 def _model(tmp_path: Path, word: object) -> Path:
-    spec = yaml.safe_load((EXAMPLES / "seed_001_p_pair_coriolis.yaml").read_text(encoding="utf-8"))
+    spec = model_tree("seed_001_p_pair_coriolis")
     spec["notation"]["relative"] = word
     out = tmp_path / "m.yaml"
     out.write_text(yaml.safe_dump(spec, allow_unicode=True), encoding="utf-8")

@@ -20,7 +20,7 @@ from kinematika.draw.options import DrawOptions
 from kinematika.explain import build, render
 from kinematika.explain.document import Drawing, Figure as DocFigure, Section
 from kinematika.explain.render import svg as svg_module
-from tests.explain.helpers import EXAMPLES, explained, rendered, scratch_axes
+from .helpers import EXAMPLES, explained, rendered, scratch_axes
 
 
 def _cross(u, v) -> float:

@@ -6,9 +6,8 @@ import re
 
 import pytest
 
-import yaml
 
-from .helpers import EXAMPLES, LANGS, explained, rendered, over
+from .helpers import LANGS, explained, rendered, over, model_tree
 
 # -- (a) the vehicles ask what the notes ask: no acceleration part -----------------------------------------------------
 # C5-2.1 asks the chassis' centre, the precession ψ̇, the rear left wheel's centre velocity and
@@ -20,7 +19,7 @@ VEHICLES = ("seed_c5_2_1_tricycle", "seed_c5_2_2_articulated")
 
 @over(name=VEHICLES)
 def test_a_vehicle_asks_no_acceleration(name):
-    asks = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))["ask"]
+    asks = model_tree(name)["ask"]
     assert not {kind for ask in asks for kind in ask} & {"acceleration", "intrinsic", "alpha", "curvature"}
     _, doc = explained(name)
     assert not any(s.title.key == "sec.accelerations" for s in doc.sections), name

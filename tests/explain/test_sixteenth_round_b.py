@@ -14,12 +14,10 @@ seeds and the four languages where it applies:
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import pytest
-import yaml
 
-from .helpers import EXAMPLES, LANGS, SEEDS, rendered, over
+from .helpers import LANGS, SEEDS, rendered, over, model_tree
 
 COMPOSITION = {"en": "## Composition of motions", "es": "## Composición de movimientos",
                "ca": "## Composició de moviments", "eu": "## Mugimenduen konposizioa"}
@@ -141,7 +139,7 @@ def test_pulley_block_strand_has_the_material_points_velocity():
 # ---- 4. the steps in the order of the asked quantities ----------------------------------------
 
 def _names(lang: str) -> dict:
-    data = yaml.safe_load(Path(EXAMPLES / "seed_c5_e4_upper_wheel.yaml").read_text())
+    data = model_tree("seed_c5_e4_upper_wheel")
     return data["names"][lang]["bodies"]
 
 

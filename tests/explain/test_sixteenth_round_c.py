@@ -21,9 +21,8 @@ import re
 from pathlib import Path
 
 import pytest
-import yaml
 
-from .helpers import EXAMPLES, SEEDS, rendered, over
+from .helpers import EXAMPLES, SEEDS, rendered, over, model_tree
 
 LOCALES = Path(__file__).resolve().parents[2] / "src" / "kinematika" / "explain" / "locales"
 
@@ -33,7 +32,7 @@ def page(name: str, lang: str) -> str:
 
 
 def names(name: str) -> dict:
-    return yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8")).get("names") or {}
+    return model_tree(name).get("names") or {}
 
 
 # ---- 1. Basque words ------------------------------------------------------------------------

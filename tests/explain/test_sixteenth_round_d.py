@@ -12,7 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from tests.explain.helpers import NOTES_SEEDS, recorded_pages, over
+from .helpers import NOTES_SEEDS, recorded_pages, over
 
 
 

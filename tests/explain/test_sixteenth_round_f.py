@@ -10,6 +10,7 @@ seeds (docs/explain.md, "Sixteenth round (f)").
 """
 from __future__ import annotations
 
+import functools
 import re
 
 import numpy as np
@@ -36,6 +37,22 @@ def _mechanism_drawings(name: str) -> list[Drawing]:
 def _drawings(name: str) -> list[Drawing]:
     _, doc = explained(name)
     return [b for b in doc.blocks() if isinstance(b, Drawing)]
+
+
+@functools.lru_cache(maxsize=None)
+def _drawn(name: str, k: int) -> tuple:
+    """The seed's k-th drawing as `kinematika.draw.draw` draws it with the page's options
+    (its matplotlib figure) and its scene, drawn once for the tests of this file that read
+    its artists (the figures are let go after them: `_let_go`)."""
+    sol, _ = explained(name)
+    options = DrawOptions(**_drawings(name)[k].options)
+    return draw(sol, options=options), build_scene(sol.inst, sol, options)
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _let_go():
+    yield
+    _drawn.cache_clear()
 
 
 def _captions(name: str, lang: str) -> list[str]:
@@ -75,10 +92,8 @@ def test_a_velocity_arrow_starts_at_its_point(name):
     """Read off the drawn arrows: every velocity arrow's path starts at its point (the scene's
     origin of the vector), never ends there."""
     sol, _ = explained(name)
-    for d in _drawings(name):
-        options = DrawOptions(**d.options)
-        scene = build_scene(sol.inst, sol, options)
-        fig = draw(sol, options=options)
+    for k in range(len(_drawings(name))):
+        fig, scene = _drawn(name, k)
         for v in scene.vectors:
             if v.kind != "velocity" or v.magnitude <= 1e-9 * sol.inst.scale:
                 continue
@@ -128,11 +143,8 @@ def test_the_pulley_on_a_cable_writes_the_notes_marks():
 def test_the_block_is_drawn_at_its_point():
     """C5-1.5: strand 5 carries T7 (its contact with pulley 4) and the block K; the block's
     rectangle is centred on K = (8r, −6r), not on the midpoint (8r, −3r)."""
-    sol, _ = explained("seed_c5_1_5_pulley_block")
-    for d in _drawings("seed_c5_1_5_pulley_block"):
-        options = DrawOptions(**d.options)
-        fig = draw(sol, options=options)
-        scene = build_scene(sol.inst, sol, options)
+    for k in range(len(_drawings("seed_c5_1_5_pulley_block"))):
+        fig, scene = _drawn("seed_c5_1_5_pulley_block", k)
         blocks = [p for p in axes(fig).patches if (p.get_gid() or "").startswith("joint:")
                   and len(p.get_path().vertices) >= 4]
         k, t7 = (np.asarray(scene.point(n), dtype=float)[:2] for n in ("K", "T7"))   # drawn at r = 0.1
@@ -145,11 +157,8 @@ def test_the_block_is_drawn_at_its_point():
 def test_a_strand_ends_at_its_points(name):
     """A moving line body that guides nothing (a cable's strand) is drawn from its first point
     or contact to its last, never past them (C5-1.1's strands ran past G1 and G2)."""
-    sol, _ = explained(name)
-    for d in _drawings(name)[:1]:
-        options = DrawOptions(**d.options)
-        scene = build_scene(sol.inst, sol, options)
-        fig = draw(sol, options=options)
+    for k in range(min(1, len(_drawings(name)))):
+        fig, scene = _drawn(name, k)
         for body in scene.bodies.values():
             if body.frame or not any(s.kind == "line" for s in body.shapes):
                 continue

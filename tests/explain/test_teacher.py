@@ -13,7 +13,7 @@ from kinematika.explain.catalogue import LANGS
 
 from tests.conftest import KINDS, sampled
 
-from .helpers import WORKED, explained, render_of
+from .helpers import WORKED, explained, render_of, model_tree
 from .test_text import plain_text
 
 # the notes' examples of each kind (every one in a deep run)
@@ -153,13 +153,11 @@ def test_every_datum_is_stated_in_the_data_section(name):
     value, every point given by plain numbers, every driver's value and every circle's
     radius appears in the Data section, with its unit where it has one; a parameter left a
     symbol appears as its symbol."""
-    import yaml
 
     from kinematika.explain.render.names import unicode_name
 
-    from .helpers import EXAMPLES
 
-    raw = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))
+    raw = model_tree(name)
     sol, doc = explained(name)
     data = _data_text(doc)
     notation = raw.get("notation") or {}

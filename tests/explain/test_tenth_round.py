@@ -6,14 +6,13 @@ from __future__ import annotations
 import re
 
 import pytest
-import yaml
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 import kinematika
 from kinematika.explain import build, render
 
-from .helpers import ALL, EXAMPLES, LANGS, explained, rendered, over
+from .helpers import ALL, LANGS, explained, rendered, over, model_tree
 
 # the words a page says a driven body speeds up or slows down with, by language
 FASTER = {"en": "is speeding up", "es": "se acelera", "ca": "s’accelera", "eu": "azkartzen ari da"}
@@ -44,7 +43,7 @@ def _expected(model: dict) -> dict:
 def test_speeding_up_follows_the_signs_of_every_example(name):
     """Every planar example's driven body with a numeric ω and α: the Data says it speeds up
     exactly when ω·α > 0 (seed 001's crank O2E, ω = −5, α = +2, was said to speed up)."""
-    model = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))
+    model = model_tree(name)
     sol, doc = explained(name)
     data = next(s for s in doc.sections if s.title.key == "sec.data")
     if not any(getattr(b, "key", "") == "data.planar" for b in data.blocks):

@@ -96,20 +96,11 @@ def test_the_gear_changes_planets_centres_sit_by_their_rings():
     K), nearer it than any other labelled dot (A1, A2, N, Q), its leader through none of them."""
     import numpy as np
 
-    from kinematika.explain import render
-    from kinematika.explain.document import Drawing
-
-    from .helpers import _recording, explained
-
-    _, doc = explained("seed_c5_e2_gear_change")
+    drawings = recorded_pages("drawings", LANGS)          # the mechanism drawings' layouts, as drawn
     for lang in LANGS:
-        for block in doc.blocks():
-            if isinstance(block, Drawing):
-                block._svg.pop(lang, None)          # drawn again, its layout recorded
-        with _recording() as found:
-            render(doc, lang, "md")
-        assert not _leaders_through_dots(found["layouts"]), lang
-        centres = [(p, lay) for placed, lay in found["layouts"] for p in placed
+        found = drawings[("seed_c5_e2_gear_change", lang)]
+        assert not _leaders_through_dots(found), lang
+        centres = [(p, lay) for placed, lay in found for p in placed
                    if p.label.gid in ("centre:ground-planet1", "centre:ground-planet2")]
         assert len(centres) >= 2, lang
         for p, lay in centres:
@@ -117,7 +108,7 @@ def test_the_gear_changes_planets_centres_sit_by_their_rings():
             box = p.box
             gap = np.hypot(*np.maximum(np.maximum(box[:2] - ring, ring - box[2:]), 0)) / lay.px
             assert gap <= NEAR, (lang, p.label.text, gap)
-            placed = next(q for q in found["layouts"] if q[1] is lay)[0]
+            placed = next(q for q in found if q[1] is lay)[0]
             centre = (box[:2] + box[2:]) / 2
             own = np.linalg.norm(centre - ring)
             for q in placed:

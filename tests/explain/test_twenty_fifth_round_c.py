@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 
 from kinematika.explain.document import Figure
-from tests.explain.helpers import LANGS, NOTES_SEEDS, explained, over
+from .helpers import LANGS, NOTES_SEEDS, explained, over, rendered
 
 POLYGONS = ("fig.level", "fig.step", "fig.polygon")
 
@@ -67,12 +67,10 @@ BAR_ROW = 24        # points from a polygon's bottom: the scale bar's row (its l
 def test_no_polygon_label_sits_on_the_scale_bar_row(name):
     """No label of a polygon, in any language, sits in the scale bar's row, where it read as
     the bar's (C5-1.1 in Basque: "k∈polea, k∈eskuineko kable-zatia" beside "v/5")."""
-    from kinematika.explain import render
-
     _, doc = explained(name)
     figs = _polygons(doc)
     for lang in LANGS:
-        render(doc, lang, "md")
+        rendered(name, lang, "md")          # each language's layouts, kept by the figures
     for fig in figs:
         for lay in fig.layouts.values():
             for lb in lay.labels:

@@ -8,9 +8,8 @@ from __future__ import annotations
 
 import re
 
-import yaml
 
-from .helpers import EXAMPLES, LANGS, SEEDS, over, plain_page
+from .helpers import LANGS, SEEDS, over, plain_page, model_tree
 
 # the reference of a motion as each language writes it, the body's name captured
 REFERENCE = {"en": r"relative to the \*([^*]+)\*", "es": r"respecto de(?:l| la) \*([^*]+)\*",
@@ -19,7 +18,7 @@ WORD = {"en": "ground", "es": "suelo", "ca": "terra", "eu": "lurr"}
 
 
 def _ground_name(name: str, lang: str) -> str:
-    model = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text())
+    model = model_tree(name)
     said = ((model.get("names") or {}).get(lang) or {}).get("bodies", {}).get("ground", "")
     return re.sub(r"^(el|la|l’) ", "", said)
 

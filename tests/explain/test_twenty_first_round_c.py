@@ -17,7 +17,7 @@ from kinematika.draw.joints import scene_symbols
 from kinematika.draw.options import DrawOptions
 from kinematika.explain.document import Drawing
 from kinematika.questions.centres import all_centres
-from tests.explain.helpers import EXAMPLES, NOTES_SEEDS, SEEDS, explained, over, recorded_pages
+from .helpers import EXAMPLES, NOTES_SEEDS, SEEDS, explained, over, recorded_pages
 
 
 def _figures(doc, key):
@@ -109,7 +109,7 @@ def test_every_circle_of_a_stepped_wheel_is_drawn_and_listed():
     Data: "the large one's is 2R"); at R = 0.1 the figure's wheels carry two circles centred
     at (0, 0.2), radii 0.1 and 0.2, the point O on the larger's rim (|OC| = 2R); the shapes
     table lists both, and the rolling contact stays the R wheel's J = (0, 3R) = 1.5·C."""
-    from tests.explain.helpers import rendered
+    from .helpers import rendered
 
     sol = kinematika.solve(EXAMPLES / "seed_c5_e1_cavity.yaml")
     scene = build_scene(sol.inst, sol, DrawOptions())

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from kinematika.draw.labels import label_owner
-from tests.explain.helpers import NOTES_SEEDS, over, recorded_pages
+from .helpers import NOTES_SEEDS, over, recorded_pages
 
 TOLERANCE = 0.2          # the part of a label's box that may lie on another body (its edge grazing a rim)
 # where no clear spot near the label exists (listed in docs/explain.md): 001's slider lies

@@ -16,12 +16,11 @@ from __future__ import annotations
 
 import re
 
-import yaml
 
-from tests.explain.helpers import EXAMPLES, LANGS, NOTES_SEEDS, over, plain_page, rendered
+from .helpers import EXAMPLES, LANGS, NOTES_SEEDS, over, plain_page, rendered, model_tree
 
 def _model(name: str) -> dict:
-    return yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text(encoding="utf-8"))
+    return model_tree(name)
 
 
 def _labels(model: dict, body: str, lang: str) -> set:

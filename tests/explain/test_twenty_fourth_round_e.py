@@ -10,9 +10,8 @@ from __future__ import annotations
 
 import re
 
-import yaml
 
-from .helpers import EXAMPLES, LANGS, SEEDS, explained, over, rendered
+from .helpers import LANGS, SEEDS, explained, over, rendered, model_tree
 
 # the legend, the same on every page (the notes' marks, seed 001)
 LEGEND = {"en": "M: magnitude known; D: direction known; ?: unknown;",
@@ -87,7 +86,7 @@ def test_every_body_after_in_is_read_off_or_defined(name, lang):
     *cilindro fijo*, ca v_{J∈terra} of the *terra cilíndric*): a body written after ∈ whose
     subscript is not its name as written is defined once on the Notation line."""
     md = rendered(name, lang, drawings=False)
-    names = (yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text()).get("names") or {}).get(lang, {})
+    names = (model_tree(name).get("names") or {}).get(lang, {})
     bodies = list((names.get("bodies") or {}).values())
     if not bodies:
         return
@@ -104,7 +103,7 @@ def test_every_body_after_in_is_read_off_or_defined(name, lang):
 # ---- the models' own texts --------------------------------------------------------------------
 def _model_texts(name: str, lang: str) -> list[str]:
     """The model's data and notes sentences in `lang` (its own words, `names.LANG`)."""
-    names = (yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text()).get("names") or {}).get(lang, {})
+    names = (model_tree(name).get("names") or {}).get(lang, {})
     return [t for key in ("data", "notes") for t in (names.get(key) or []) if isinstance(t, str)]
 
 

@@ -18,7 +18,7 @@ import numpy as np
 
 from kinematika.explain.context import Ctx
 from kinematika.explain.document import Figure
-from tests.explain.helpers import NOTES_SEEDS, explained, over, recorded_pages
+from .helpers import NOTES_SEEDS, explained, over, recorded_pages
 
 APART = 0.05        # of a polygon's size (its largest coordinate): two arrows side by side at least this far apart
 SIN_PARALLEL = 0.02

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import re
 
-from tests.explain.helpers import LANGS, NOTES_SEEDS, over, rendered
+from .helpers import LANGS, NOTES_SEEDS, over, rendered
 
 # what each language's caption says when o′ is lettered so because o is the pole, and the
 # wording that read as if O were at the pole

@@ -11,9 +11,8 @@ from __future__ import annotations
 
 import re
 
-import yaml
 
-from .helpers import EXAMPLES, LANGS, SEEDS, over, rendered
+from .helpers import LANGS, SEEDS, over, rendered, model_tree
 
 # the ground's word as the page writes it, italic (the catalogues' ground-word, without article)
 GROUND = {"en": "*ground*", "es": "*suelo*", "ca": "*terra*", "eu": "*lurra*"}
@@ -61,7 +60,7 @@ def test_the_basque_legend_says_what_a_clashing_letter_marks(name: str) -> None:
     ezaguna adierazten du; ez da D puntua"."""
     md = rendered(name, "eu")
     assert "ez inoiz" not in md and "termino baten azpian" not in md
-    model = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text())
+    model = model_tree(name)
     clash = [m for m in ("M", "D") if m in (model.get("points") or {})]
     for letter in ("M", "D"):
         said = re.search(rf"{letter} letrak {MARKED[letter]} ezaguna adierazten du; ez da {letter} puntua", md)

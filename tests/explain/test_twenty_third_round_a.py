@@ -10,12 +10,11 @@ from __future__ import annotations
 
 import re
 
-import yaml
 
 from kinematika.explain.document import CentreNote
 from kinematika.explain.kinds import rolls
 
-from .helpers import EXAMPLES, LANGS, SEEDS, explained, over, rendered
+from .helpers import LANGS, SEEDS, explained, over, rendered, model_tree
 
 # the no-slip clause each catalogue writes, by its opening words
 SLIP = {"en": "does not slip on", "es": "no desliza sobre", "ca": "no llisca sobre",
@@ -86,7 +85,7 @@ def test_the_fixed_row_says_a_wheels_point_is_a_contact(name: str, lang: str) ->
     """A point the fixed body carries only for a wheel or rolling joint (`at:` in the model,
     no pin of the frame there) is listed in its row as the contact it is, never bare beside
     its own points (C5-2.1: "C1, C2, F" was read as the wheels' centres)."""
-    model = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text())
+    model = model_tree(name)
     frame = next(iter(model["bodies"]))
     kinds = {"wheel", "rolling"}
     at = [j for j in model.get("joints", []) if frame in j.get("bodies", []) and j.get("at")]

@@ -8,7 +8,6 @@ import re
 
 import pytest
 import sympy
-import yaml
 from typer.testing import CliRunner
 
 import kinematika
@@ -19,7 +18,7 @@ from kinematika.explain.render.names import html_name, latex_name, unicode_name
 from tests.conftest import sampled
 from tests.core.models import jansen as jansen_model
 
-from .helpers import EXAMPLES
+from .helpers import model_tree
 
 def crank(parameters: dict, distance: str, angle: str, body: str, omega: str) -> str:
     """A crank O–A turned by a driver, placed polar: the smallest model with formulas."""
@@ -83,7 +82,7 @@ def test_html_name_escapes():
 def four_bar():
     """The four-bar asked its rocker's ω alone (its explanation a third of the whole ask's
     work), every parameter a symbol."""
-    tree = yaml.safe_load((EXAMPLES / "four_bar.yaml").read_text())
+    tree = model_tree("four_bar")
     tree["ask"] = [{"omega": "rocker"}]
     sol = kinematika.solve(tree, symbolic=True)
     return build(sol)

@@ -7,66 +7,31 @@ names across a planet's rim, C5-E.5's wheel name across its own rim, C5-1.1's ez
 (`draw.labels.Layout._lines_under`). A Basque reader read I_{eskuineko kable-zatia} as
 "kable − zatia": mathtext sets "-" as a minus (`draw.names._roman`).
 
-The mechanism drawings of the notes' seeds are drawn again here in the four languages, every
-label layout recorded with the lines drawn (from the label board: outlines, bars, rims and
-hatching with their bodies; and every construction line as painted, whether or not the
-placer was told of it). A line's crossing of a label's text box is measured here by sampling
-the line every half pixel, not by the placer's arithmetic.
+The mechanism drawings of the notes' seeds in the four languages, every label layout
+recorded with the lines drawn under it as the pages are written (`helpers._recording`: from the
+label board, outlines, bars, rims and hatching with their bodies; and every construction line
+as painted, whether or not the placer was told of it). A line's crossing of a label's text box
+is measured here by sampling the line every half pixel, not by the placer's arithmetic.
 """
 from __future__ import annotations
 
-import functools
 import re
 
 import numpy as np
 
-from tests.explain.helpers import LANGS, NOTES_SEEDS, explained, over
+from .helpers import LANGS, NOTES_SEEDS, over, recorded_pages
 
-DRAWN = (0.5, 3.0)      # the board's weights of drawn lines (hatching 0.7, bars and outlines 1); arrows weigh 3
 # where no label place clear of every other body's line exists near the label (docs/explain.md):
 # (seed, label text) -> the bodies whose lines it may cross
 KNOWN: dict[tuple[str, str], set] = {("seed_c5_e2_gear_change", "gurpil zentral finkoa (zentrala)"): {"arm", "ground"},
                                      ("seed_c5_e1_cavity", "arm OC"): {"wheels"}}
 
 
-@functools.lru_cache(maxsize=None)
 def layouts(name: str, lang: str) -> list:
     """Each label layout of the seed's mechanism drawings in `lang`: (placements, lines), the
-    lines as (display points (n, 2), body or "" or "construction")."""
-    from kinematika.draw import labels, paint
-    from kinematika.draw import svg as draw_svg
-    from kinematika.explain.document import Drawing
-
-    _, doc = explained(name)
-    found: list = []
-    init, run, paint_mark = labels.Layout.__init__, labels.Layout.run, paint.paint_mark
-
-    def recorded_init(self, board, ax):
-        init(self, board, ax)
-        owners = board.owners if len(board.owners) == len(board.obstacles) else [""] * len(board.obstacles)
-        lines = [(ax.transData.transform(line), owner) for (line, weight, _), owner in zip(board.obstacles, owners)
-                 if DRAWN[0] <= weight < DRAWN[1] and len(line) >= 2]
-        lines += [(ax.transData.transform(line), "construction") for line in getattr(board, "construction", [])]
-        self.recorded_lines = lines
-
-    def recorded_run(self):
-        out = run(self)
-        found.append((out, self.recorded_lines))
-        return out
-
-    def recorded_paint_mark(cv, m):
-        if m.kind == "line" and (m.group or "").startswith(("kennedy:", "normal:")):
-            cv.board.__dict__.setdefault("construction", []).append(np.asarray(m.points, dtype=float))
-        return paint_mark(cv, m)
-
-    labels.Layout.__init__, labels.Layout.run, paint.paint_mark = recorded_init, recorded_run, recorded_paint_mark
-    try:
-        for block in doc.blocks():
-            if isinstance(block, Drawing):
-                draw_svg(block.solution, bare=True, lang=lang, **block.options)
-    finally:
-        labels.Layout.__init__, labels.Layout.run, paint.paint_mark = init, run, paint_mark
-    return found
+    lines as (display points (n, 2), body or "" or "construction"), recorded as its page was
+    drawn (the page's own drawings, drawn once a run)."""
+    return [(placed, lay.recorded_lines) for placed, lay in recorded_pages("drawings", LANGS)[(name, lang)]]
 
 
 def crossed(points: np.ndarray, box: np.ndarray) -> bool:
