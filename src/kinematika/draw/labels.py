@@ -64,6 +64,9 @@ TOWARDS = 60.0           # a close point's label leaning towards the other point
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 SHAFT = 0.5              # per point a mechanism vector's value slides back from its tip along its shaft (`Label.shaft`)
 RIM = 400.0              # a vector's value whose box another body's outline (a rim, a bar) runs through: as on its area
+NOT_OWN = 600.0          # a polygon term's label nearer another arrow than its own (`Layout._not_own`): as over a label
+OWN_MARGIN = 4.0         # points by which a polygon term's label lies nearer its own arrow than any other
+END_CLEAR = 8.0          # points of each end of an arrow (at most a quarter of it) that a label is not read beside
 
 
 @dataclass
@@ -118,6 +121,7 @@ class LabelBoard:
     tips: list[np.ndarray] = field(default_factory=list)   # arrows' tips (data coordinates)
     owners: list[str] = field(default_factory=list)        # each obstacle's body ("" for none)
     areas: list[tuple[str, np.ndarray]] = field(default_factory=list)   # (body, polygon, data)
+    arrows: list[np.ndarray] = field(default_factory=list)  # a polygon's arrows, (start, end) data
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
             prefer: Any = None, **kw: Any) -> None:
@@ -146,6 +150,14 @@ class LabelBoard:
         crowded polygon read as the label of the arrow ending there (issue 30, sixteenth
         round (d)); weighed as a label's overlap, not as a drawn line."""
         self.tips.append(np.asarray(point, dtype=float))
+
+    def arrow(self, start: Any, end: Any) -> None:
+        """A polygon's arrow from `start` to `end` (data): kept clear as a drawn line (weight
+        3), its head as a tip (`tip`), and one of the arrows a term's label must lie nearer
+        its own than (`Layout._not_own`)."""
+        self.avoid(start, end, weight=3.0)
+        self.tip(end)
+        self.arrows.append(np.array([np.asarray(start, dtype=float), np.asarray(end, dtype=float)]))
 
     def layout(self, ax: Any) -> list[Placement]:
         """The best place of every label in `ax` (display pixels), without drawing anything."""
@@ -216,6 +228,8 @@ class Layout:
         self.unit = _directions()
         self.tips = ax.transData.transform(np.array(board.tips)) if board.tips else np.zeros((0, 2))
         self.arrows = _arrow_segments(board.obstacles, ax.transData)
+        self.terms = (np.array([ax.transData.transform(a) for a in board.arrows]) if board.arrows
+                      else np.zeros((0, 2, 2)))       # a polygon's arrows (display), for `_not_own`
         owners = board.owners if len(board.owners) == len(board.obstacles) else [""] * len(board.obstacles)
         self.outlines = _arrow_segments(board.obstacles, ax.transData, low=1.0, high=3.0)
         self.outline_owners = np.array([o for (line, weight, _), o in zip(board.obstacles, owners)
@@ -322,7 +336,33 @@ class Layout:
             cost += PREFER * (1 - dirs @ p)
         if label.along is not None or label.off_arrows:
             cost += ARROW_UNDER * self._over_arrows(label, boxes)
+        if label.along is not None:
+            cost += NOT_OWN * self._not_own(label, boxes, dist)
         return cost
+
+    def _not_own(self, label: Label, boxes: np.ndarray, dist: np.ndarray) -> np.ndarray:
+        """For each box of a polygon term's label (`Label.along`), whether it reads as another
+        arrow's: 1, else 0. A label beside its arrow (no leader, `dist` < `LEADER`) is read as
+        the label of the line nearest it, so another arrow of the polygon (`LabelBoard.arrow`)
+        must lie at least `OWN_MARGIN` points farther from its text box than its own; a label
+        set off with a leader is read by its leader, so no other arrow may come within
+        `OWN_MARGIN` of it (its own is far). Each arrow is measured without `END_CLEAR` at
+        its ends (`trimmed`): at a corner, a label just beyond one arrow's end reads as the
+        label of the line it lies beside. At a corner where several short terms meet an
+        image, or beside side-by-side terms, the box beside a term's middle lay nearer a
+        neighbour's line (001's a_FB^t outside a_F∈N/R, 1.9 pt from it and 12.5 from its own;
+        C5-1.3's v_{Q∈bar rel support} by the blue o→e; issue 30, twenty-seventh round (a)).
+        Where no box is clear, all pay alike and the other costs choose."""
+        if len(self.terms) < 2:
+            return np.zeros(len(boxes))
+        own = self.ax.transData.transform(np.asarray(label.along, dtype=float))
+        mine = np.all(np.linalg.norm(self.terms - own[None], axis=2) <= 0.5 * self.px, axis=1)
+        if not mine.any() or mine.all():
+            return np.zeros(len(boxes))
+        inner = boxes + np.array([1, 1, -1, -1]) * PAD * self.px
+        near = _box_segment_distance(inner, trimmed(self.terms, END_CLEAR * self.px))      # (K, M)
+        d_own = np.where(dist < LEADER, near[:, mine].min(axis=1), 0.0)
+        return (near[:, ~mine].min(axis=1) < d_own + OWN_MARGIN * self.px).astype(float)
 
     def _over_arrows(self, label: Label, boxes: np.ndarray) -> np.ndarray:
         """For each box of a polygon's label (an arrow's, `Label.along`, or an image's name,
@@ -618,6 +658,35 @@ def _segment_hits(segs: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     t_in = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2))
     t_out = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2))
     return np.minimum(t_out.min(axis=-1), 1.0) - np.maximum(t_in.max(axis=-1), 0.0) > 1e-9
+
+
+def trimmed(segs: np.ndarray, end: float) -> np.ndarray:
+    """The segments (M, 2, 2) without `end` at each of their ends (at most a quarter of each):
+    the part of an arrow a label is read beside. At a corner where two arrows meet, a label
+    just beyond one's end is no nearer it than the other's start, yet it reads as the label
+    of the line it lies along, not of the corner's other line going away from it."""
+    d = segs[:, 1] - segs[:, 0]
+    length = np.linalg.norm(d, axis=1)
+    cut = np.minimum(end, 0.25 * length) / np.maximum(length, 1e-12)
+    return np.stack([segs[:, 0] + cut[:, None] * d, segs[:, 1] - cut[:, None] * d], axis=1)
+
+
+def _box_segment_distance(boxes: np.ndarray, segs: np.ndarray) -> np.ndarray:
+    """(K, M): the distance from each box (K, 4: x0, y0, x1, y1) to each segment (M, 2, 2):
+    0 where the segment passes through the box (`_segment_hits`), else the least of its ends'
+    distances to the box and the box's corners' distances to the segment."""
+    lo, hi = boxes[:, None, None, :2], boxes[:, None, None, 2:]               # (K, 1, 1, 2)
+    ends = segs[None]                                                         # (1, M, 2, 2)
+    gap = np.maximum(np.maximum(lo - ends, ends - hi), 0.0)
+    d_ends = np.linalg.norm(gap, axis=3).min(axis=2)                          # (K, M)
+    corners = np.stack([boxes[:, [0, 1]], boxes[:, [2, 1]], boxes[:, [0, 3]], boxes[:, [2, 3]]], axis=1)
+    a, b = segs[:, 0][None, None], segs[:, 1][None, None]                     # (1, 1, M, 2)
+    ab = b - a
+    c = corners[:, :, None, :]                                                # (K, 4, 1, 2)
+    t = np.clip(((c - a) * ab).sum(axis=3) / np.maximum((ab * ab).sum(axis=3), 1e-12), 0.0, 1.0)
+    d_corners = np.linalg.norm(a + t[..., None] * ab - c, axis=3).min(axis=1)  # (K, M)
+    out = np.minimum(d_ends, d_corners)
+    return np.where(_segment_hits(segs, boxes), 0.0, out)
 
 
 def _lines_in_boxes(segs: np.ndarray, line: np.ndarray, boxes: np.ndarray) -> np.ndarray:

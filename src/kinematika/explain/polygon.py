@@ -21,7 +21,7 @@ from .context import Ctx
 from .document import CENTRE_POINT_RE, Arrow, Described, Equation, Figure, Inline, Lead, Name, Names, msg
 from .terms import acceleration_terms
 
-OFFSET = 0.06           # of the polygon's size: the gap between collinear arrows (a label's height at the figure's width)
+OFFSET = 0.06           # of the polygon's size: the least gap between side-by-side arrows (at least a label's room, `_label_across`)
 PARALLEL = 0.02         # sin of the angle under which two arrows read as parallel (about 1°)
 ALONG = 0.2             # sin of the angle (about 11°) under which a term out of (into) a blue arrow's end runs along it
 SAME = 1e-9             # relative: two points (or arrows) are one
@@ -432,10 +432,16 @@ def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tupl
     blue arrows moved aside ended beside their dots: C5-2.2, C5-E.1's o′ a dot no arrow
     reached; twenty-fifth round (c)). Only terms (black) move aside, and a term moved keeps
     its ends joined to the points it runs between: the second list, thin lines from each
-    moved end back to where it was (an image, or the tip of the term before it)."""
+    moved end back to where it was (an image, or the tip of the term before it).
+
+    The gap leaves room for a term's label between the two arrows, at the scale the polygon
+    is drawn at (`_label_across`): a label's height beside horizontal arrows, its width
+    beside vertical ones. A term goes to the side where it and its joins cross the fewest
+    arrows (`_aside`): into the polygon, across its arrows, no side of it was clear for its
+    label (issue 30, twenty-seventh round (a))."""
     pts = [p for a in arrows for p in (a.start, a.end)]
     size = max(*(abs(p[0]) for p in pts), *(abs(p[1]) for p in pts), 1e-300)
-    gap = OFFSET * size
+    k = _drawn_scale(pts)
     placed: dict[int, Arrow] = {}
     joins: list[tuple[tuple, tuple]] = []
     order = sorted(range(len(arrows)), key=lambda i: arrows[i].style != "result")
@@ -444,18 +450,102 @@ def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tupl
         if a.style == "result" and any(b.style == "result" for b in arrows):
             placed[i] = a                       # blue: from the pole to its image, where it is
             continue
+        gap = max(OFFSET * size, _label_across(a) / k)      # room for its label beside it
         near = [_across(a, b) for b in placed.values() if _along(a, a, b, math.inf, gap)]     # side by side
-        # the least move that clears them all: none, or just `gap` to either side of one
+        # the least move that clears them all: none, or just `gap` to either side of one, to
+        # the side where it crosses the fewest other arrows (`_aside`)
         shifts = sorted({0.0, *(s + d for s in near for d in (gap, -gap))}, key=lambda s: (abs(s), -s))
-        moved = a
-        for shift in shifts:
-            moved = _shifted(a, shift)
-            if not any(_along(moved, a, b, gap, gap) for b in placed.values()):
-                break
+        clear = [(abs(s), _shifted(a, s)) for s in shifts]
+        clear = [(s, m) for s, m in clear if not any(_along(m, a, b, gap, gap) for b in placed.values())]
+        if not clear:
+            moved = _shifted(a, shifts[-1])
+        elif clear[0][0] == 0.0:
+            moved = a
+        else:                       # the least move to either side: one gap on each
+            moved = _aside(a, [m for s, m in clear if s <= clear[0][0] + gap * (1 + 1e-9)],
+                           [b for j, b in enumerate(arrows) if j != i], _chain(arrows, i))
         placed[i] = moved
         if moved.start != a.start:
             joins += [(a.start, moved.start), (a.end, moved.end)]
     return [placed[i] for i in range(len(arrows))], joins
+
+
+LABEL_BOX = (30.0, 16.0)    # points: a term's label (a_FB^t), width and height, as the figures set it
+
+
+def _drawn_scale(pts: list[tuple]) -> float:
+    """Points per model unit at which a polygon through `pts` (its arrows' ends) and its pole
+    is drawn (`render.svg.points_per_unit`, the bounds 2 % larger as `render.svg.bounds`)."""
+    from .render.svg import points_per_unit
+
+    xs, ys = [0.0] + [p[0] for p in pts], [0.0] + [p[1] for p in pts]
+    span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-300)
+    return points_per_unit(min(xs) - 0.02 * span, min(ys) - 0.02 * span, max(xs) + 0.02 * span, max(ys) + 0.02 * span)
+
+
+def _label_across(a: Arrow) -> float:
+    """The room (points) a term's label needs between arrow `a` and one beside it: the
+    label's box across `a`'s direction (`LABEL_BOX`: w |sin θ| + h |cos θ|), its text's
+    nearest to its own arrow (`draw.labels.PAD` + the least of `DISTANCES`) and the other
+    arrow that and `OWN_MARGIN` farther (`draw.labels.Layout._not_own`), and a point.
+    Side-by-side terms closer than that left no room between them for either label, which
+    then sat outside, by the other's line (001's a_FB^t outside a_F∈N/R, 10.6 pt apart;
+    C5-E.1's three vertical terms 15.6 pt apart for labels 26 pt wide; issue 30,
+    twenty-seventh round (a))."""
+    from ..draw.labels import DISTANCES, OWN_MARGIN, PAD
+
+    dx, dy = a.end[0] - a.start[0], a.end[1] - a.start[1]
+    n = math.hypot(dx, dy) or 1.0
+    w, h = LABEL_BOX
+    near = PAD + DISTANCES[0]               # the label's text from its own arrow, at its nearest
+    return w * abs(dy) / n + h * abs(dx) / n + near + (near + OWN_MARGIN) + 1.0
+
+
+def _aside(a: Arrow, moves: list[Arrow], others: list[Arrow], chain: list[Arrow]) -> Arrow:
+    """Of the places term `a` may be moved aside to (`moves`: the least move to either side,
+    the least first), the one where it and the two thin lines joining it back to its ends
+    cross or run along the fewest of the polygon's `others` arrows (as built), the least move
+    of equals; a join may run along the terms of `chain` (the term before `a` in its equation
+    and the one after, which it leads into). A term moved into the polygon, across the arrows
+    there, left its label no side clear of them: 001's a_EO2^n moved from o→e towards o→b,
+    across that blue arrow and into the narrow angle between the two, its label beside o→a;
+    the other way it lies outside, clear of every arrow. C5-E.1's a_OC^n moved right of o
+    drew its join at c along a_CO^t (issue 30, twenty-seventh round (a))."""
+    def hits(m: Arrow) -> int:
+        joins = [Arrow(a.start, m.start, None, "known"), Arrow(a.end, m.end, None, "known")]
+        return sum(_crosses(m, b) for b in others) + sum(
+            _crosses(j, b) or (b not in chain and _overlap(b, j, 1e-6 * _length(b)))
+            for j in joins for b in others)
+    return min(moves, key=hits)             # min keeps the least move of equals
+
+
+def _chain(arrows: list[Arrow], i: int) -> list[Arrow]:
+    """The terms next to arrow i in its equation's chain, as built (`_Builder.equation`
+    appends a side's terms in turn): the one before, ending where it starts, and the one
+    after, starting where it ends."""
+    a = arrows[i]
+    before = [arrows[i - 1]] if i > 0 and arrows[i - 1].end == a.start else []
+    after = [arrows[i + 1]] if i + 1 < len(arrows) and arrows[i + 1].start == a.end else []
+    return before + after
+
+
+def _length(a: Arrow) -> float:
+    """The length of arrow a (1 for a point: a scale for `_crosses`'s rounding)."""
+    return math.hypot(a.end[0] - a.start[0], a.end[1] - a.start[1]) or 1.0
+
+
+def _crosses(a: Arrow, b: Arrow) -> bool:
+    """Whether the arrows a and b cross (their segments meet at a point inside both, not
+    where one only touches the other: a join from an image on a blue arrow)."""
+    eps = SAME * _length(a) * _length(b)
+
+    def side(o: tuple, u: tuple, v: tuple) -> float:
+        return (u[0] - o[0]) * (v[1] - o[1]) - (u[1] - o[1]) * (v[0] - o[0])
+
+    def apart(p: float, q: float) -> bool:
+        return (p > eps and q < -eps) or (p < -eps and q > eps)
+    return (apart(side(a.start, a.end, b.start), side(a.start, a.end, b.end))
+            and apart(side(b.start, b.end, a.start), side(b.start, b.end, a.end)))
 
 
 def _along(moved: Arrow, a: Arrow, b: Arrow, tol: float, gap: float) -> bool:

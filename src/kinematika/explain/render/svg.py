@@ -156,10 +156,17 @@ def layout(fig: Figure, label: Callable[[Sym | str], Text]) -> Layout:
     return fig.layouts[key]
 
 
+def points_per_unit(x0: float, y0: float, x1: float, y1: float) -> float:
+    """The scale a figure whose drawing spans the box (x0, y0)–(x1, y1) is drawn at, in points
+    per model unit: as large as fits WIDTH × MAX_HEIGHT within the margins."""
+    w, h = max(x1 - x0, 1e-300), max(y1 - y0, 1e-300)
+    return min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
+
+
 def _layout(fig: Figure, texts: dict, names: list) -> Layout:
     x0, y0, x1, y1 = bounds(fig)
-    w, h = max(x1 - x0, 1e-300), max(y1 - y0, 1e-300)
-    k = min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
+    h = max(y1 - y0, 1e-300)
+    k = points_per_unit(x0, y0, x1, y1)
     out = Layout(fig, k, x0, y1, h * k + 2 * MARGIN + BAR)
     items: list[tuple[Text, str, tuple, int, Optional[tuple], Optional[tuple]]] = \
         [(text, COLOURS["known"], p, 0 if style == "pole" else 1, None, None)
@@ -193,8 +200,7 @@ def _place(lay: Layout, items: list) -> list[Placed]:
                                   along=None if along is None else np.array([data(along[0]), data(along[1])]),
                                   width=text.width, height=text.height, off_arrows=along is None))
     for a in fig.arrows:
-        board.avoid(data(a.start), data(a.end), weight=3.0)
-        board.tip(data(a.end))
+        board.arrow(data(a.start), data(a.end))
     for p, q in fig.segments:
         board.avoid(data(p), data(q), weight=1.0)
     for p, q in fig.lines:
