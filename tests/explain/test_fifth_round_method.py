@@ -64,11 +64,11 @@ def test_the_reference_is_the_ground():
     assert "no llisca sobre la *politja fixa*" in ca
     eu = rendered("seed_c5_1_5_pulley_block", "eu", drawings=False)
     # "solido" said once (ninth round); an instant centre relative to the ground (twentieth round (b))
-    assert "*3. polearen* biraketa-zentro instantaneoa *lurrarekiko*" in eu
-    # the fixed body's row ties its name to the ground's word (twenty-second round (b)):
-    # "*sabaia* (*lurra*, finkoa)"; nowhere else is the ceiling called *lurra*
-    assert "*sabaia* (*lurra*, finkoa)" in eu
-    assert "*lurra*" not in eu.replace("(*lurra*, finkoa)", "") and "*sabaia eta 1. kable-zatia* solidoarekiko" not in eu
+    # twenty-seventh round (e): the ceiling keeps its own name, as the reference too: "*sabaia*
+    # (finkoa)" and "*sabaiarekiko*", never "*lurra*" on a page with no floor
+    assert "*3. polearen* biraketa-zentro instantaneoa *sabaiarekiko*" in eu
+    assert "| 1 | *sabaia* (finkoa) |" in eu
+    assert "*lurr" not in eu and "*sabaia eta 1. kable-zatia* solidoarekiko" not in eu
 
 
 # -- C5-1.3: a value is written before it is used ------------------------------------------------------------------
@@ -171,6 +171,7 @@ def test_the_tied_strand_is_a_part_welded_to_the_ceiling():
     ca = rendered("seed_c5_1_5_pulley_block", "ca", drawings=False)
     assert "| 2 | *tram 1* (fix al *sostre*) |" in ca
     assert "I_politja1: el punt de contacte J (rodolament sense lliscament)" in ca   # the centre, said once (17a)
-    # an absolute centre is said relative to the ground, as the notes say (twentieth round (b))
-    assert "CIR de la *politja 3* respecte del *terra*" in ca and "CIR de la *politja 3* respecte del *sostre*" not in ca
+    # an absolute centre is said relative to the ceiling, the fixed body's one name on the page
+    # (twentieth round (b) said the ground; twenty-seventh round (e): a page with no floor)
+    assert "CIR de la *politja 3* respecte del *sostre*" in ca and "CIR de la *politja 3* respecte del *terra*" not in ca
     assert "ω_tram1" not in ca                   # a part of the frame has no rate to name

@@ -114,8 +114,9 @@ def test_the_composition_does_not_sum_again_what_a_step_summed(name: str) -> Non
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_001_composition_refers_to_step_2(lang: str) -> None:
-    words = {"en": "is the equation of Step 2", "es": "es la ecuación del paso 2", "ca": "és l’equació del pas 2",
-             "eu": "2. urratseko ekuazioa da"}[lang]
+    # (twenty-seventh round (e): the equation with which the step found it, never one "which found")
+    words = {"en": "is the equation with which Step 2 found", "es": "es la ecuación del paso 2", "ca": "és l’equació del pas 2",
+             "eu": "aurkitzeko erabilitako ekuazioa"}[lang]
     for name in ("seed_001_p_pair_coriolis", "seed_001_rolling_pair"):
         assert _page(name, lang).count(words) == 2, (name, lang)
 

@@ -58,7 +58,8 @@ def _labels(name: str, lang: str) -> dict[str, str]:
 def test_the_shortened_subscripts_the_reader_named_are_said() -> None:
     """The reader's own cases, each by hand."""
     for name, sym in (("seed_c5_1_4_epicyclic", "ω_central"), ("seed_c5_e2_gear_change", "ω_central"),
-                      ("seed_c5_e5_unequal_wheels", "ω_rodaR"), ("seed_c5_e6_bicycle", "ω_plat")):
+                      ("seed_c5_e6_bicycle", "ω_plat")):   # C5-E.5's ω_rodaR: its wheel is the notes' *roda R*
+                                                            # since the twenty-seventh round (e), the label its name
         page = rendered(name, "ca", "md", drawings=False)
         assert any(ln.startswith("Notació: ") and sym in ln for ln in page.splitlines()), (name, sym)
 

@@ -8,7 +8,8 @@ from kinematika.explain.document import Lead, Msg, Names, Section
 
 from .helpers import LANGS, SEEDS, explained, over, rendered
 
-ORDER_ITEMS = ("order.item", "order.item_group", "order.item_data", "order.item_group_data")
+ORDER_ITEMS = ("order.item", "order.item_group", "order.item_data", "order.item_group_data", "order.item_through",
+               "order.item_group_through")
 TITLES = ("step.title", "step.title_group")
 
 

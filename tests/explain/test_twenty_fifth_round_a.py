@@ -20,10 +20,10 @@ CENTRE_REL = re.compile(r"I_\{[^}]* rel [^}]*\}")
 INTRO = {"en": "The symbol I with a body's name", "es": "El símbolo I, con el nombre de un sólido",
          "ca": "El símbol I, amb el nom d’un sòlid", "eu": "I ikurrak, solido baten izenarekin"}
 # what says "rel": the data's sentence on relative quantities, or the notation line's clause
-TOLD = {"en": ("A relative quantity names both bodies", "two names joined by “rel”"),
-        "es": ("Una magnitud relativa nombra los dos sólidos", "dos nombres unidos por «rel»"),
-        "ca": ("Una magnitud relativa anomena els dos sòlids", "dos noms units per «rel»"),
-        "eu": ("Magnitude erlatibo batek bi solidoak izendatzen ditu", "«rel» hitzaz lotutako bi izen")}
+TOLD = {"en": ("The notation of a relative quantity names both bodies", "two names joined by “rel”"),
+        "es": ("La notación de una magnitud relativa indica los dos sólidos", "dos nombres unidos por «rel»"),
+        "ca": ("La notació d’una magnitud relativa indica els dos sòlids", "dos noms units per «rel»"),
+        "eu": ("Magnitude erlatibo baten notazioak bi solidoak adierazten ditu", "«rel» hitzaz lotutako bi izen")}
 
 
 @over(name=SEEDS, lang=LANGS)

@@ -16,8 +16,11 @@ import re
 from .helpers import LANGS, SEEDS, over, rendered
 
 # the Data's sentence: its defined rate, "ω_{b rel a}" after the velocity it defines
-SENTENCE = {"en": "A relative quantity names both bodies", "es": "Una magnitud relativa nombra los dos sólidos",
-            "ca": "Una magnitud relativa anomena els dos sòlids", "eu": "Magnitude erlatibo batek bi solidoak izendatzen ditu"}
+# (twenty-seventh round (e): "the notation of" a relative quantity names them, ca R3)
+SENTENCE = {"en": "The notation of a relative quantity names both bodies",
+            "es": "La notación de una magnitud relativa indica los dos sólidos",
+            "ca": "La notació d’una magnitud relativa indica els dos sòlids",
+            "eu": "Magnitude erlatibo baten notazioak bi solidoak adierazten ditu"}
 RATE = re.compile(r"ω_\{[^}]* rel [^}]*\}")
 
 

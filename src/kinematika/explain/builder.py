@@ -272,16 +272,22 @@ def refer_drags(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
     for sec in doc.sections:
         if not isinstance(sec.title, Msg) or sec.title.key != "sec.composition":
             continue
+        moving = None                    # the moving frame of the point composed below
         for k, b in enumerate(sec.blocks):
+            if isinstance(b, Msg) and b.key == "composition.point":
+                moving = b.args["frame"]
             if not isinstance(b, Equation) or b.target.sym.sub_key != "sub.drag" or b.point is None:
                 continue
             seen = kept.get((b.level, ctx.motion_key(b.point.point, b.point.body)))
             value = Value(b.target.value, "speed" if b.level == "v" else "accel")
             drag = [_written(t.sym) for t in b.sides[0]] if b.sides else []
             first = next((n for side, n in sums if len(drag) > 1 and side[:len(drag)] == drag), None)
-            if seen is not None:
+            if seen is not None and moving is not None:
+                # the quantity by its name and the point by what it is, the moving frame's point
+                # that coincides with B — never "the motion of that point" for v and a alike
                 sec.blocks[k] = msg("composition.drag_seen", sym=b.target.sym, seen=seen[0].sym, value=value,
-                                    step=seen[1])
+                                    step=seen[1], kind="speed" if b.level == "v" else "accel",
+                                    point=Name(b.point.point), frame=moving)
                 named.append((b.level, b.target.sym, seen[0].sym, b.point.point))
             elif first is not None:
                 terms: list = []           # the drag is the first terms of a step's sum: v_B + v_{A-B}
@@ -406,7 +412,8 @@ def refer_reverses(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
                 key = "composition.reverse"
                 extra: dict[str, Any] = {"kind": unit}          # the quantity, never "motion"
                 if unit == "accel" and _at_rest(ctx, m.group(1), m.group(2), m.group(3)):
-                    key, extra = "composition.reverse_rolling", {"kind": unit, "vel": Sym("v", t.sym.sub)}
+                    key, extra = "composition.reverse_rolling", {"kind": unit, "vel": Sym("v", t.sym.sub),
+                                                                 "wb": omega_sym(m.group(2)), "wa": omega_sym(m.group(3))}
                 _insert_before(sec, eq, msg(key, sym=t.sym, back=rev[0].sym,
                                             value=Value(t.value, unit), step=rev[1], **extra))
 

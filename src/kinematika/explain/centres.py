@@ -50,7 +50,7 @@ def centres_section(ctx: Ctx, part: str = "all") -> Optional[Section]:
         first_body = _example_body(ctx, [made[k].pair for k in chosen])
         sec.add(msg("centres.intro", example=Sym("I", "13", vector=False),
                     pair=Sym("I", f"{ctx.frame},{first_body}", vector=False), body=Name(first_body, "body"),
-                    frame=Name(ctx.frame, "body", reference=True, centre=True)))
+                    frame=Name(ctx.frame, "body", reference=True)))
     if part == "all" or (part == "first") == (len(first) == len(chosen)) or part == "rest":
         sec.add(drawing(ctx, "fig.centres", velocities=False, accelerations=False, centres=True, curvature=False,
                         centre_pairs=used_pairs(made, chosen), construction=construction(ctx, made, chosen)))

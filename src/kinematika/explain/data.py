@@ -25,7 +25,7 @@ from typing import Any, Optional
 from ..model.body_shapes import Circle, Disc, Line, Plane
 from .context import Ctx, radius_formula
 from .context import model_formula as _formula
-from .document import (Ann, CentreNote, Described, Drawing, Inline, Msg, Name, Section, Sym, Table, Told, Value, msg,
+from .document import (Ann, CentreNote, Described, Drawing, Inline, Msg, Name, Names, Section, Sym, Table, Told, Value, msg,
                        names, point)
 from .planar import driver_msg
 
@@ -388,12 +388,37 @@ def shape_rows(ctx: Ctx) -> list:
     point and direction (a plane's, a disc's axis in space)."""
     rows = []
     for name, b in ctx.model.bodies.items():
-        for model_shape, shape in zip(b.shapes, ctx.inst.shapes.get(name, [])):
+        pairs = list(zip(b.shapes, ctx.inst.shapes.get(name, [])))
+        concentric = _concentric(ctx, pairs)
+        if concentric is not None:
+            rows.append([Name(name, "body", bare=True), msg("shape.concentric", n=len(pairs)), concentric])
+            continue
+        for model_shape, shape in pairs:
             described = _shape(ctx, model_shape, shape)
             if described is not None:
                 rows.append([Name(name, "body", bare=True), msg(f"shape.{type(model_shape).__name__.lower()}"),
                              described])
     return rows
+
+
+def _concentric(ctx: Ctx, pairs: list) -> Any:
+    """One body's several circles about one centre said in one row, "centre C, radii R and
+    2·R" (C5-E.1's wheels of radii R and 2R, one rigid body): two rows "*wheels* | circle" read
+    as two wheels of one name, neither said (issue 30, twenty-seventh round (e)). None unless
+    every shape of the body is such a circle."""
+    if len(pairs) < 2 or not all(type(s) is Circle for s, _ in pairs):
+        return None
+    centres = {s.center_point or tuple(ctx.clean(i.center, "len")) for s, i in pairs}
+    if len(centres) != 1:
+        return None
+    spec = pairs[0][0]
+    centre = point(spec.center_point) if spec.center_point else Value(ctx.clean(pairs[0][1].center, "len"), "len")
+    radii = []
+    for s, i in pairs:
+        radius: Any = Value(ctx.clean(i.radius, "len"), "len")
+        formula = radius_formula(ctx, s)
+        radii.append(Inline([Value(formula, ""), " = ", radius]) if formula is not None else radius)
+    return msg("data.circles", centre=centre, radii=Names(radii))
 
 
 def _shape(ctx: Ctx, spec, shape) -> Any:

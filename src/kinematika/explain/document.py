@@ -78,9 +78,9 @@ class Name:
     text: str
     kind: str = "point"
     bare: bool = False             # a body's name without its article (in a table's cell)
-    reference: bool = False        # the ground as the reference of a motion ("relative to the ground")
-    centre: bool = False           # the reference of an absolute instant centre: always the ground's
-                                   # word, as the notes say it ("CIR respecte al terra", C5-1.1, 1.5)
+    reference: bool = False        # the fixed body as the reference of a motion ("relative to the
+                                   # ground"): the ground's word where the ground is named after a
+                                   # part of it (`Document.ground_part`), else the body's own name
 
     def __str__(self) -> str:
         return self.text

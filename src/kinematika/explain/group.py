@@ -1439,7 +1439,7 @@ def centre_site(ctx: Ctx, name: str, body: str):
     # "I_pulley, found above, has no velocity", never "I_pulley … is the point I" (round 15a)
     key = "centre.site_s" if CENTRE_POINT_RE.fullmatch(name) else "centre.site"
     return msg(key, point=point_name(name), body=body_name(body),
-               frame=Name(ctx.frame, "body", reference=True, centre=True),
+               frame=Name(ctx.frame, "body", reference=True),
                centre=Sym("I", f"{ctx.frame},{body}", vector=False), sym=Sym("v", ctx.point_label(name, body)))
 
 

@@ -310,7 +310,8 @@ def _drop_order_items(sec: Section, bodies: set[str]) -> None:
 
 STEP_TITLES = ("step.title", "step.title_group")
 # the order of solution's items: found from bodies, or (the first, a translating chassis) from the data
-ORDER_ITEMS = ("order.item", "order.item_group", "order.item_data", "order.item_group_data")
+ORDER_ITEMS = ("order.item", "order.item_group", "order.item_data", "order.item_group_data", "order.item_through",
+               "order.item_group_through")
 
 
 def _untitle(sec: Section, bodies: set[str]) -> None:
@@ -328,6 +329,12 @@ def _untitle(sec: Section, bodies: set[str]) -> None:
 
 
 def _unname(m: Msg, bodies: set[str]) -> None:
+    """An item of the order of solution names the bodies its step works out: one whose rate
+    went unworked leaves the list. A step that found its bodies from others through such a
+    body keeps it as the way it went: "1. The *bar OQ*, from the *left plane* and the *right
+    plane*, through the *left wheel* and the *right wheel*" (issue 30, twenty-seventh round
+    (e): C5-1.2's bar is placed by the wheels' centres, which roll on the planes, and the
+    item read as if the planes gave it alone)."""
     named = m.args.get("bodies")
     lead = isinstance(named, Lead)
     named = named.item if isinstance(named, Lead) else named
@@ -336,6 +343,13 @@ def _unname(m: Msg, bodies: set[str]) -> None:
         if left and len(left) < len(named.items):
             kept = Names(left, named.each)
             m.args["bodies"] = Lead(kept) if lead else kept
+            if m.key in THROUGH:
+                m.key = THROUGH[m.key]
+                m.args["through"] = Names([n for n in named.items if n not in left], "order.from")
+
+
+# an item found from bodies, and the same item naming the bodies it went through (`_unname`)
+THROUGH = {"order.item": "order.item_through", "order.item_group": "order.item_group_through"}
 
 
 # the sentences that carry a point's velocity across a contact (v_J∈9 = v_J∈8): forward steps

@@ -141,8 +141,10 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
     if len(poly.arrows) < 2:
         return None
     styles = {a.style for a in poly.arrows}
-    fig = Figure(msg("fig.polygon_v" if eq.level == "v" else "fig.polygon_a",
-                     unknown=int("unknown" in styles), result=int("result" in styles)),
+    summed = any(a.style == "result" and a.label == eq.target.sym for a in poly.arrows)
+    fig = Figure(msg("fig.polygon_v" if eq.level == "v" else "fig.polygon_a",     # a sentence, not a list of
+                     unknown=int("unknown" in styles), result=int(summed), sym=eq.target.sym),    # phrases
+
                  unit="speed" if eq.level == "v" else "accel", sample=ctx.symbolic,
                  values=ctx.drawn_values())
     fig.arrows, fig.lines = _separated(poly.arrows)

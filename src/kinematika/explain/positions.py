@@ -15,7 +15,7 @@ from typing import Any, Optional
 from ..engine.turns import turn_for, turned_polar
 from ..model.constructions import CircleLine, InFrame, LineDef, Polar, TwoCircles, TwoLines
 from ..model.point_order import construction_order
-from .context import Ctx
+from .context import Ctx, segment
 from .document import Inline, Msg, Name, Section, Value, msg, point
 
 
@@ -142,9 +142,12 @@ def _loc(ctx: Ctx, loc: Any) -> Any:
 
 
 def _pair(ctx: Ctx, a: Any, b: Any) -> Any:
-    """A segment or direction named by two points (AB), or by its ends' coordinates."""
+    """A segment or direction named by two points as every segment of the page is named
+    (`context.segment`: AB, OP1, O1-A only where the run-together text is ambiguous; issue 30,
+    twenty-seventh round (e): C5-2.2 wrote "along O–P1" and "along OP" on one page), or by its
+    ends' coordinates."""
     if isinstance(a, str) and isinstance(b, str):
-        return Inline([point(a), "–" if len(a) > 1 or len(b) > 1 else "", point(b)])
+        return Name(segment(a, b), "segment")
     return Inline([_loc(ctx, a), "–", _loc(ctx, b)])
 
 

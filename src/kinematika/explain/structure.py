@@ -8,7 +8,7 @@ from typing import Any, Optional
 from ..draw.names import body_numbers
 from ..model.body_shapes import Circle, Disc
 from ..point_pair import PointPair
-from .freedom import dof_unsaid
+from .freedom import by_data, dof_by_data
 from .context import Ctx
 from .kinds import kind_key, knife_edge, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
@@ -79,7 +79,9 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     if welded:
         sec.add(msg("structure.welded", bodies=names(welded, "body"), bodies_n=len(welded), frame=body(ctx.frame)))
     counts = dof_counts(ctx)
-    if not dof_unsaid(ctx, counts):
+    if dof_by_data(ctx, counts):        # C5-1.5: a datum's direction is part of the statement
+        sec.add(msg("structure.dof_data", **by_data(ctx)))
+    else:
         sec.add(msg("structure.dof", **counts))
     sec.add(drawing(ctx, "fig.mechanism", velocities=True, accelerations=False, centres=False, curvature=False))
     if not steps:
@@ -186,18 +188,16 @@ def _body_cell(ctx: Ctx, name: str):
     """The structure table's body: the frame marked fixed — or, when the ground is named
     after a part of it (`ground_part`: C5-1.6's *polea finkoa*), marked with the ground's word
     the text later writes for the reference, "*polea finkoa* (*lurra*)" — and a body welded
-    to it marked part of it (`welded_to_frame`). One rule ties the model's name to the ground's
-    word wherever they differ, since the text names the reference of every instant centre "the
-    *ground*" (`Name.centre`): a part with a shape is the ground, "*polea finkoa* (*lurra*)"; a
-    shapeless frame named otherwise (C5-1.1's and C5-1.5's ceiling) is marked fixed and tied,
-    "*ceiling* (fixed: the *ground*)", "*sabaia* (*lurra*, finkoa)" (twenty-second round b:
-    the row said "*sabaia* (finkoa)" and the text "*lurrarekiko*")."""
+    to it marked part of it (`welded_to_frame`). A part with a shape is the ground, "*polea
+    finkoa* (*lurra*)", as the text names the reference of a motion there; a shapeless frame
+    keeps its own name on the whole page (C5-1.1's and C5-1.5's ceiling, 001's *bastidor*) and
+    is marked fixed, "*techo* (fijo)": the text says "respecto del *techo*" (twenty-seventh round
+    (e): "*bastidor* (fijo: el *suelo*)" read as two bodies, and a ceiling's page has no floor)."""
     if name == ctx.frame and ground_part(ctx) and not _named_ground(ctx, name):
         return msg("structure.frame_ground", body=Name(name, "body", bare=True),
                    ground=Name(name, "body", bare=True, reference=True))
-    if name == ctx.frame:     # the catalogue ties the ground's word where the language's name differs
-        return msg("structure.frame_named", body=Name(name, "body", bare=True),
-                   ground=Name(name, "body", reference=True, centre=True))
+    if name == ctx.frame:
+        return msg("structure.frame_named", body=Name(name, "body", bare=True))
     if ctx.fixed(name):
         return msg("structure.fixed_part", body=Name(name, "body", bare=True), frame=body(ctx.frame))
     return Name(name, "body", bare=True)
@@ -333,7 +333,26 @@ def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     # a symbolic page's label too long to set names the vector alone (`draw.vectors`): the
     # caption then promises no magnitude
     moduli = int(all(not v.text.startswith("≈") for v in shown))
-    return {"arrows": arrows, "points": points, "moduli": moduli}
+    centre = _centre_of(ctx, [v.ref for v in shown]) if arrows == 3 else None
+    return {"arrows": arrows, "points": points, "moduli": moduli,
+            "centre": msg("fig.rest_centre", body=Name(centre, "body")) if centre else ""}
+
+
+def _centre_of(ctx: Ctx, refs: list[str]) -> Optional[str]:
+    """The one moving body whose instant centre the figure's only drawn point is, for the
+    caption to say so: a point of a turning body with no velocity at this instant is its
+    instant centre, never a point "at rest" (issue 30, twenty-seventh round (e): C5-E.4's P,
+    whose acceleration is v²/R). None for several points, a point of several moving bodies
+    (a pin), or a body that does not turn."""
+    if len(refs) != 1:
+        return None
+    point, _, body = refs[0].partition(":")[0].partition("@")
+    bodies = [body] if body else [b for b in ctx.model.carriers(point) if not ctx.fixed(b)]
+    if len(bodies) != 1 or ctx.fixed(bodies[0]):
+        return None
+    w = ctx.num(ctx.omega(bodies[0]))
+    turning = any(abs(float(c)) > 1e-12 for c in (w if isinstance(w, tuple) else (w,)))
+    return bodies[0] if turning else None
 
 
 def _composition_order(v: Any) -> int:

@@ -52,11 +52,10 @@ class ExplainWords:
         ref = self.ref(q)
         return relative_name(ref.point, ref.body, rel) if rel else self.point(q)
 
-    def frame(self, q: Any, centre: bool = False) -> Name:
-        """The question's frame as a body's name; `centre`, the reference of an absolute instant
-        centre, which the notes always call the ground (`Name.centre`)."""
+    def frame(self, q: Any) -> Name:
+        """The question's frame as a body's name: the fixed one as a reference (`Name.reference`)."""
         moving = self.ctx.rel(q.relative_to)
-        return Name(moving, "body") if moving else Name(self.ctx.frame, "body", reference=True, centre=centre)
+        return Name(moving, "body") if moving else Name(self.ctx.frame, "body", reference=True)
 
     def rate(self, base: str, q: Any, vector: bool) -> Sym:
         """ω_body or α_body, relative to the question's frame when it is not the fixed one."""

@@ -204,7 +204,7 @@ class Words(Protocol):
     def motion(self, q: Asked) -> str:
         """The subscript of the point's motion seen from the question's frame (B, A∈4/2)."""
 
-    def frame(self, q: Asked, centre: bool = False) -> Any:
+    def frame(self, q: Asked) -> Any:
         """The question's frame of reference as a body's name (the fixed frame by default)."""
 
     def rate(self, base: str, q: Asked, vector: bool) -> Any:
@@ -238,8 +238,6 @@ class QuestionKind:
                                             # accelerations (an exercise carries a wrong one)
     needs_rate: ClassVar[bool] = True       # an explanation of it needs its body's ω (an instant
                                             # centre's does not: the joints place it)
-    centre: ClassVar[bool] = False          # it asks for an instant centre: its frame, when the
-                                            # fixed one, is called the ground, as the notes do
     rows_by_part: ClassVar[bool] = False    # an explanation's answers table gives each part
                                             # labelled by its own symbol a row of its own (the
                                             # notes' final list of C5-1.8: one line a point)
@@ -279,7 +277,7 @@ class QuestionKind:
             return words.msg(key, joint=words.name(q.target, "joint"))
         if self.about == "point":
             return words.msg(key, point=words.name(words.point(q)), frame=words.frame(q))
-        return words.msg(key, body=words.name(q.target, "body"), frame=words.frame(q, centre=self.centre))
+        return words.msg(key, body=words.name(q.target, "body"), frame=words.frame(q))
 
     def part(self, words: Words, q: Asked, key: str, sub: Optional[str]) -> Any:
         """How an explanation labels the field `key` (its part `sub`) of a compound answer;

@@ -62,7 +62,6 @@ class Icr(QuestionKind):
     fields = {"point": "position", "direction": None}
     page = True
     needs_rate = False          # the centres section places it from the joints (Aronhold–Kennedy)
-    centre = True               # "CIR … respecte al terra" whatever the fixed body is called
     placed = True               # and its answer says its distance from the point it was placed from
 
     def answer(self, sol: Solved, q: Asked) -> Any:

@@ -10,7 +10,7 @@ data-planar = Moviment pla: les velocitats{ $accelerations ->
         [0] {" "}angulars
        *[other] {" "}i acceleracions angulars
     } tenen signe, positives en sentit antihorari.
-data-relative = Una magnitud relativa anomena els dos sòlids: { $v } és la velocitat del punt { $point } { ELISION($body_b) ->
+data-relative = La notació d’una magnitud relativa indica els dos sòlids: { $v } és la velocitat del punt { $point } { ELISION($body_b) ->
         [vowel] d’{ $body_b }
        *[other] de { $body_b }
     } vista des { ELISION($body_a) ->
@@ -30,6 +30,7 @@ data-spatial = Les velocitats i acceleracions angulars són vectors (regla de la
 data-symbolic = Les dades són símbols, i cada resultat és una fórmula exacta en funció d’aquests. Les figures es dibuixen amb valors de mostra dels símbols, indicats sota cada figura.
 data-symbol = un símbol (qualsevol valor)
 data-constructed = situat per construcció (vegeu Posició)
+data-circles = centre { $centre }, radis { $radii }
 data-circle = centre { $centre }, radi { $radius }
 data-line = per { $through }, direcció { $direction }
 data-plane = per { $through }, normal { $direction }
@@ -82,11 +83,8 @@ structure-frame_ground = { $body }{ SAME($body, $ground) ->
         [yes] {""}
        *[no] {" "}({ $ground })
     }
-# the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
-structure-frame_named = { $body } { SAME($body, $ground) ->
-        [yes] (fix)
-       *[no] (fix: { $ground })
-    }
+# the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
+structure-frame_named = { $body } (fix)
 structure-welded = { $bodies } { $bodies_n ->
         [one] és fix a
        *[other] són fixos a
@@ -109,6 +107,16 @@ structure-dof = El mecanisme té { $dof ->
         [3] tres graus
        *[other] { $dof } graus
     } de llibertat.
+structure-dof_data = El mecanisme té { $dof ->
+        [one] un grau
+        [2] dos graus
+        [3] tres graus
+       *[other] { $dof } graus
+    } de llibertat, un per cada dada ({ $data }); l’enunciat també dona la direcció de { $whole }.
+shape-concentric = { $n ->
+        [2] dues circumferències concèntriques
+       *[other] { $n } circumferències concèntriques
+    }
 shape-circle = circumferència
 shape-line = recta
 shape-disc = disc
@@ -149,7 +157,7 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
             [2] {", amb el seu mòdul, en "}{ $unit }/s
            *[other] {", amb el seu mòdul"}
         }
-        [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+        [3] { $points } té velocitat nul·la en aquest instant{ $centre }, escrita al costat
         [4] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
@@ -170,6 +178,10 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
            *[other] {", amb els seus mòduls"}
         }
     }; els sòlids estan numerats.
+fig-rest_centre = {" "}(és el CIR { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    })
 fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
@@ -186,7 +198,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
             [2] {", amb el seu mòdul, en "}{ $unit }/s
            *[other] {", amb el seu mòdul"}
         }
-        [3] { $points } és en repòs: la seva velocitat és nul·la, escrita al costat
+        [3] { $points } té velocitat nul·la en aquest instant{ $centre }, escrita al costat
         [4] { $format ->
             [md] les fletxes
            *[other] les fletxes blaves
@@ -220,26 +232,32 @@ fig-centre_image = { $count ->
 }
 fig-primed = La imatge del punt { $point } és { $image } ({ $symbol }: { $what }).
 fig-a_symbol = una dada
-fig-polygon_v = Polígon de velocitats des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
-        [md] , els termes l’un darrere l’altre
-       *[other] : en negre els termes coneguts{ $unknown ->
+fig-polygon_v = Polígon de velocitats, a escala. Des del pol o, els seus termes es dibuixen l’un darrere l’altre{ $result ->
+        [1] {" "}i la seva suma, { $sym }, el tanca
+       *[other] {""}
+    }{ $format ->
+        [md] {""}
+       *[other] {" "}(en negre els termes coneguts{ $unknown ->
             [1] , en vermell els trobats en aquest pas
            *[other] {""}
         }{ $result ->
-            [1] , en blau el resultat
+            [1] , en blau la suma
            *[other] {""}
-        }
-    }.
-fig-polygon_a = Polígon d’acceleracions des del pol o, a escala, amb els vèrtexs imatges dels punts{ $format ->
-        [md] , els termes l’un darrere l’altre
-       *[other] : en negre els termes coneguts{ $unknown ->
+        })
+    }. Cada vèrtex és la imatge d’un punt.
+fig-polygon_a = Polígon d’acceleracions, a escala. Des del pol o, els seus termes es dibuixen l’un darrere l’altre{ $result ->
+        [1] {" "}i la seva suma, { $sym }, el tanca
+       *[other] {""}
+    }{ $format ->
+        [md] {""}
+       *[other] {" "}(en negre els termes coneguts{ $unknown ->
             [1] , en vermell els trobats en aquest pas
            *[other] {""}
         }{ $result ->
-            [1] , en blau el resultat
+            [1] , en blau la suma
            *[other] {""}
-        }
-    }.
+        })
+    }. Cada vèrtex és la imatge d’un punt.
 fig-sample = Dibuixat amb valors de mostra dels símbols.
 sec-position = Posició
 pos-intro = Anàlisi de posició: cada punt mòbil se situa com el situa l’enunciat, a partir de punts ja situats.
@@ -312,6 +330,8 @@ order-assur = El mecanisme es descompon en les seves entrades i díades; cadascu
 order-blocks = Els sòlids es troben en aquest ordre, cadascun a partir de sòlids ja coneguts:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.
+order-item_through = { $n }. { $kind }: { $bodies }, a partir { $known }, a través { $through }.
+order-item_group_through = { $n }. { $bodies }, a partir { $known }, a través { $through }.
 order-item_data = { $n }. { $kind }: { $bodies }, a partir de les dades.
 order-item_group_data = { $n }. { $bodies }, a partir de les dades.
 order-from = { ELISION($name) ->
@@ -594,7 +614,7 @@ composition-rolls = { $body } { COUNT($body) ->
 sec-curvature = Curvatura de les trajectòries
 curvature-intro = L’acceleració es descompon en una part tangencial, segons la velocitat, i una de normal, perpendicular a ella; el radi de curvatura és { $rho }.
 curvature-point = Punt { $point }: velocitat { $v }.
-curvature-rest = El punt { $point } és en repòs: la seva trajectòria no té curvatura en aquest instant.
+curvature-rest = El punt { $point } té velocitat nul·la en aquest instant: la seva trajectòria no hi té radi de curvatura (ℜ = |v|²/|aⁿ| necessita una velocitat).
 curvature-straight = L’acceleració normal { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
@@ -693,14 +713,23 @@ composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $bod
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada al pas { $step }: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $value }, el moviment d’aquest punt trobat al pas { $step }.
+composition-drag_seen = { $sym } = { $value }, { WORD($kind) ->
+        [accel] l’acceleració
+       *[speed] la velocitat
+    } del punt { ELISION($frame) ->
+        [vowel] d’{ $frame }
+       *[other] de { $frame }
+    } que coincideix amb { $point }, trobada al pas { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: els primers termes de l’equació del pas { $step }.
-composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, que va trobar { $seen }.
+composition-sum_seen = Així, { $sym } = { $terms } és l’equació del pas { $step }, amb la qual { $seen_n ->
+        [one] s’ha trobat
+       *[other] s’han trobat
+    } { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: l’oposada { WORD($kind) ->
         [accel] de l’acceleració
        *[speed] de la velocitat
     } relativa trobada al pas { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }, ja que { $vel } = 0 (contacte de rodolament) anul·la els dos termes de Coriolis, i per tant les dues acceleracions relatives són oposades.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }. Les dues acceleracions relatives difereixen en els termes de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, que aquí són nuls, ja que { $vel } = 0 (contacte de rodolament).
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)

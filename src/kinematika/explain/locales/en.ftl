@@ -10,7 +10,7 @@ data-planar = Planar motion: angular velocities{ $accelerations ->
         [0] {""}
        *[other] {" "}and accelerations
     } are signed, counter-clockwise positive.
-data-relative = A relative quantity names both bodies: { $v } is the velocity of the point { $point } of { $body_b } seen from { $body_a }{ WORD($rate) ->
+data-relative = The notation of a relative quantity names both bodies: { $v } is the velocity of the point { $point } of { $body_b } seen from { $body_a }{ WORD($rate) ->
         [yes] , and { $w } the angular velocity of { $body_b } relative to { $body_a }.
        *[no] .
     }
@@ -18,6 +18,7 @@ data-spatial = Angular velocities and accelerations are vectors (right-hand rule
 data-symbolic = The data are symbols, and every result is an exact formula in them. The figures are drawn at sample values of the symbols, given under each figure.
 data-symbol = a symbol (any value)
 data-constructed = placed by construction (see Position)
+data-circles = centre { $centre }, radii { $radii }
 data-circle = centre { $centre }, radius { $radius }
 data-line = through { $through }, direction { $direction }
 data-plane = through { $through }, normal { $direction }
@@ -55,11 +56,8 @@ structure-frame_ground = { $body }{ SAME($body, $ground) ->
         [yes] {""}
        *[no] {" "}({ $ground })
     }
-# the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
-structure-frame_named = { $body } { SAME($body, $ground) ->
-        [yes] (fixed)
-       *[no] (fixed: { $ground })
-    }
+# the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
+structure-frame_named = { $body } (fixed)
 structure-welded = { $bodies } { $bodies_n ->
         [one] is
        *[other] are
@@ -82,6 +80,16 @@ structure-dof = The mechanism has { $dof ->
         [3] three degrees
        *[other] { $dof } degrees
     } of freedom.
+structure-dof_data = The mechanism has { $dof ->
+        [one] one degree
+        [2] two degrees
+        [3] three degrees
+       *[other] { $dof } degrees
+    } of freedom, one for each datum ({ $data }); the statement gives the direction of { $whole } too.
+shape-concentric = { $n ->
+        [2] two concentric circles
+       *[other] { $n } concentric circles
+    }
 shape-circle = circle
 shape-line = line
 shape-disc = disc
@@ -113,7 +121,7 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
             [2] {", with its magnitude, in "}{ $unit }/s
            *[other] {", with its magnitude"}
         }
-        [3] { $points } is at rest: its velocity is zero, written beside it
+        [3] { $points } has zero velocity at this instant{ $centre }, written beside it
         [4] { $format ->
             [md] the arrows
            *[other] the blue arrows
@@ -131,6 +139,7 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
            *[other] {", with their magnitudes"}
         }
     }; the bodies are numbered.
+fig-rest_centre = {" "}(it is the instant centre of { $body })
 fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
@@ -144,7 +153,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
             [2] {", with its magnitude, in "}{ $unit }/s
            *[other] {", with its magnitude"}
         }
-        [3] { $points } is at rest: its velocity is zero, written beside it
+        [3] { $points } has zero velocity at this instant{ $centre }, written beside it
         [4] { $format ->
             [md] the arrows
            *[other] the blue arrows
@@ -175,26 +184,32 @@ fig-centre_image = { $count ->
 }
 fig-primed = The image of the point { $point } is { $image } ({ $symbol } is the { $what }).
 fig-a_symbol = symbol of a datum
-fig-polygon_v = Velocity polygon from the pole o, to scale, its vertices the images of the points{ $format ->
-        [md] , the terms head to tail
-       *[other] : known terms in black{ $unknown ->
+fig-polygon_v = Velocity polygon, to scale. From the pole o its terms are laid head to tail{ $result ->
+        [1] , and their sum { $sym } closes it
+       *[other] {""}
+    }{ $format ->
+        [md] {""}
+       *[other] {" "}(known terms in black{ $unknown ->
             [1] , terms found in this step in red
            *[other] {""}
         }{ $result ->
-            [1] , the result in blue
+            [1] , the sum in blue
            *[other] {""}
-        }
-    }.
-fig-polygon_a = Acceleration polygon from the pole o, to scale, its vertices the images of the points{ $format ->
-        [md] , the terms head to tail
-       *[other] : known terms in black{ $unknown ->
+        })
+    }. Each vertex is the image of a point.
+fig-polygon_a = Acceleration polygon, to scale. From the pole o its terms are laid head to tail{ $result ->
+        [1] , and their sum { $sym } closes it
+       *[other] {""}
+    }{ $format ->
+        [md] {""}
+       *[other] {" "}(known terms in black{ $unknown ->
             [1] , terms found in this step in red
            *[other] {""}
         }{ $result ->
-            [1] , the result in blue
+            [1] , the sum in blue
            *[other] {""}
-        }
-    }.
+        })
+    }. Each vertex is the image of a point.
 fig-sample = Drawn at sample values of the symbols.
 sec-position = Position
 pos-intro = Position analysis: each moving point is placed as the statement places it, from points already placed.
@@ -240,6 +255,8 @@ order-assur = The mechanism is decomposed into its inputs and dyads; each is sol
 order-blocks = The bodies are found in this order, each from bodies already known:
 order-item = { $n }. { $kind }: { $bodies }, from { $known }.
 order-item_group = { $n }. { $bodies }, from { $known }.
+order-item_through = { $n }. { $kind }: { $bodies }, from { $known }, through { $through }.
+order-item_group_through = { $n }. { $bodies }, from { $known }, through { $through }.
 order-item_data = { $n }. { $kind }: { $bodies }, from the data.
 order-item_group_data = { $n }. { $bodies }, from the data.
 order-from = { $name }
@@ -450,7 +467,7 @@ composition-rolls = { $body } { COUNT($body) ->
 sec-curvature = Curvature of paths
 curvature-intro = The acceleration splits into a tangential part along the velocity and a normal part across it; the radius of curvature is { $rho }.
 curvature-point = Point { $point }: velocity { $v }.
-curvature-rest = Point { $point } is at rest: its path has no curvature at this instant.
+curvature-rest = Point { $point } has zero velocity at this instant: its path has no radius of curvature there (ℜ = |v|²/|aⁿ| needs a velocity).
 curvature-straight = The normal acceleration of { $point } is zero: its path is straight here (or at an inflection point).
 curvature-circle = Point { $point }: it keeps its distance from the fixed point { $o }, so its path is the circle of radius { $radius } about { $o }; the radius of curvature is that radius:
 curvature-circle_centre = The centre of curvature of the path of { $point } is { $o }, at { $centre }.
@@ -504,14 +521,17 @@ composition-slide_seen_step = { $point } slides along its guide; { $body } { COU
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $value }, the motion of that point found in Step { $step }.
+composition-drag_seen = { $sym } = { $value }, the { WORD($kind) ->
+        [accel] acceleration
+       *[speed] velocity
+    } of the point of { $frame } that coincides with { $point }, found in Step { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: the first terms of the equation of Step { $step }.
-composition-sum_seen = So { $sym } = { $terms } is the equation of Step { $step }, which found { $seen }.
+composition-sum_seen = So { $sym } = { $terms } is the equation with which Step { $step } found { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the relative { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }, since { $vel } = 0 (rolling contact) makes both Coriolis terms vanish, so the two relative accelerations are opposite.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. The two relative accelerations differ by the Coriolis terms, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, which vanish here, since { $vel } = 0 (rolling contact).
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)

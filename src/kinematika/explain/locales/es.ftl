@@ -10,7 +10,7 @@ data-planar = Movimiento plano: las velocidades{ $accelerations ->
         [0] {" "}angulares
        *[other] {" "}y aceleraciones angulares
     } llevan signo, positivas en sentido antihorario.
-data-relative = Una magnitud relativa nombra los dos sólidos: { $v } es la velocidad del punto { $point } de { $body_b } vista desde { $body_a }{ WORD($rate) ->
+data-relative = La notación de una magnitud relativa indica los dos sólidos: { $v } es la velocidad del punto { $point } de { $body_b } vista desde { $body_a }{ WORD($rate) ->
         [yes] , y { $w } la velocidad angular de { $body_b } respecto de { $body_a }.
        *[no] .
     }
@@ -18,6 +18,7 @@ data-spatial = Las velocidades y aceleraciones angulares son vectores (regla de 
 data-symbolic = Los datos son símbolos, y cada resultado es una fórmula exacta en función de ellos. Las figuras se dibujan con valores de muestra de los símbolos, indicados bajo cada figura.
 data-symbol = un símbolo (cualquier valor)
 data-constructed = situado por construcción (véase Posición)
+data-circles = centro { $centre }, radios { $radii }
 data-circle = centro { $centre }, radio { $radius }
 data-line = por { $through }, dirección { $direction }
 data-plane = por { $through }, normal { $direction }
@@ -55,11 +56,8 @@ structure-frame_ground = { $body }{ SAME($body, $ground) ->
         [yes] {""}
        *[no] {" "}({ $ground })
     }
-# the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
-structure-frame_named = { $body } { SAME($body, $ground) ->
-        [yes] (fijo)
-       *[no] (fijo: { $ground })
-    }
+# the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
+structure-frame_named = { $body } (fijo)
 structure-welded = { $bodies } { COUNT($bodies) ->
         [many] están { GENDER($bodies) ->
             [f] fijadas
@@ -88,6 +86,16 @@ structure-dof = El mecanismo tiene { $dof ->
         [3] tres grados
        *[other] { $dof } grados
     } de libertad.
+structure-dof_data = El mecanismo tiene { $dof ->
+        [one] un grado
+        [2] dos grados
+        [3] tres grados
+       *[other] { $dof } grados
+    } de libertad, uno por cada dato ({ $data }); el enunciado da también la dirección de { $whole }.
+shape-concentric = { $n ->
+        [2] dos circunferencias concéntricas
+       *[other] { $n } circunferencias concéntricas
+    }
 shape-circle = circunferencia
 shape-line = recta
 shape-disc = disco
@@ -119,7 +127,7 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
             [2] {", con su módulo, en "}{ $unit }/s
            *[other] {", con su módulo"}
         }
-        [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+        [3] { $points } tiene velocidad nula en este instante{ $centre }, escrita a su lado
         [4] { $format ->
             [md] las flechas
            *[other] las flechas azules
@@ -137,6 +145,7 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
            *[other] {", con sus módulos"}
         }
     }; los sólidos están numerados.
+fig-rest_centre = {" "}(es el CIR de { $body })
 fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
@@ -150,7 +159,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
             [2] {", con su módulo, en "}{ $unit }/s
            *[other] {", con su módulo"}
         }
-        [3] { $points } está en reposo: su velocidad es nula, escrita a su lado
+        [3] { $points } tiene velocidad nula en este instante{ $centre }, escrita a su lado
         [4] { $format ->
             [md] las flechas
            *[other] las flechas azules
@@ -181,26 +190,32 @@ fig-centre_image = { $count ->
 }
 fig-primed = La imagen del punto { $point } es { $image } ({ $symbol }: { $what }).
 fig-a_symbol = un dato
-fig-polygon_v = Polígono de velocidades desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
-        [md] , los términos uno tras otro
-       *[other] : en negro los términos conocidos{ $unknown ->
+fig-polygon_v = Polígono de velocidades, a escala. Desde el polo o, sus términos se dibujan uno tras otro{ $result ->
+        [1] {" "}y su suma, { $sym }, lo cierra
+       *[other] {""}
+    }{ $format ->
+        [md] {""}
+       *[other] {" "}(en negro los términos conocidos{ $unknown ->
             [1] , en rojo los hallados en este paso
            *[other] {""}
         }{ $result ->
-            [1] , en azul el resultado
+            [1] , en azul la suma
            *[other] {""}
-        }
-    }.
-fig-polygon_a = Polígono de aceleraciones desde el polo o, a escala, con los vértices imágenes de los puntos{ $format ->
-        [md] , los términos uno tras otro
-       *[other] : en negro los términos conocidos{ $unknown ->
+        })
+    }. Cada vértice es la imagen de un punto.
+fig-polygon_a = Polígono de aceleraciones, a escala. Desde el polo o, sus términos se dibujan uno tras otro{ $result ->
+        [1] {" "}y su suma, { $sym }, lo cierra
+       *[other] {""}
+    }{ $format ->
+        [md] {""}
+       *[other] {" "}(en negro los términos conocidos{ $unknown ->
             [1] , en rojo los hallados en este paso
            *[other] {""}
         }{ $result ->
-            [1] , en azul el resultado
+            [1] , en azul la suma
            *[other] {""}
-        }
-    }.
+        })
+    }. Cada vértice es la imagen de un punto.
 fig-sample = Dibujado con valores de muestra de los símbolos.
 sec-position = Posición
 pos-intro = Análisis de posición: cada punto móvil se sitúa como lo sitúa el enunciado, a partir de puntos ya situados.
@@ -234,6 +249,8 @@ order-assur = El mecanismo se descompone en sus entradas y díadas; cada una se 
 order-blocks = Los sólidos se hallan en este orden, cada uno a partir de sólidos ya conocidos:
 order-item = { $n }. { $kind }: { $bodies }, a partir { $known }.
 order-item_group = { $n }. { $bodies }, a partir { $known }.
+order-item_through = { $n }. { $kind }: { $bodies }, a partir { $known }, a través { $through }.
+order-item_group_through = { $n }. { $bodies }, a partir { $known }, a través { $through }.
 order-item_data = { $n }. { $kind }: { $bodies }, a partir de los datos.
 order-item_group_data = { $n }. { $bodies }, a partir de los datos.
 order-from = de { $name }
@@ -422,7 +439,7 @@ composition-rolls = { $body } { COUNT($body) ->
 sec-curvature = Curvatura de las trayectorias
 curvature-intro = La aceleración se descompone en una parte tangencial, según la velocidad, y una normal, perpendicular a ella; el radio de curvatura es { $rho }.
 curvature-point = Punto { $point }: velocidad { $v }.
-curvature-rest = El punto { $point } está en reposo: su trayectoria no tiene curvatura en este instante.
+curvature-rest = El punto { $point } tiene velocidad nula en este instante: su trayectoria no tiene ahí radio de curvatura (ℜ = |v|²/|aⁿ| necesita una velocidad).
 curvature-straight = La aceleración normal de { $point } es nula: su trayectoria es recta aquí (o tiene un punto de inflexión).
 curvature-circle = Punto { $point }: mantiene la distancia al punto fijo { $o }, así que su trayectoria es la circunferencia de radio { $radius } centrada en { $o }; el radio de curvatura es ese radio:
 curvature-circle_centre = El centro de curvatura de la trayectoria de { $point } es { $o }, en { $centre }.
@@ -464,14 +481,20 @@ composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $value }, el movimiento de ese punto hallado en el paso { $step }.
+composition-drag_seen = { $sym } = { $value }, la { WORD($kind) ->
+        [accel] aceleración
+       *[speed] velocidad
+    } del punto de { $frame } que coincide con { $point }, hallada en el paso { $step }.
 composition-drag_terms = { $sym } = { $terms } = { $value }: los primeros términos de la ecuación del paso { $step }.
-composition-sum_seen = Así, { $sym } = { $terms } es la ecuación del paso { $step }, que halló { $seen }.
+composition-sum_seen = Así, { $sym } = { $terms } es la ecuación del paso { $step }, con la que { $seen_n ->
+        [one] se halló
+       *[other] se hallaron
+    } { $seen }.
 composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }, ya que { $vel } = 0 (contacto de rodadura) anula los dos términos de Coriolis, así que las dos aceleraciones relativas son opuestas.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. Las dos aceleraciones relativas difieren en los términos de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, que aquí son nulos, ya que { $vel } = 0 (contacto de rodadura).
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)

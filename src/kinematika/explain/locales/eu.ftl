@@ -10,7 +10,7 @@ data-planar = Mugimendu laua: { $accelerations ->
         [0] abiadura angeluarrek
        *[other] abiadura eta azelerazio angeluarrek
     } zeinua dute, positiboak erlojuaren orratzen aurkako noranzkoan.
-data-relative = Magnitude erlatibo batek bi solidoak izendatzen ditu: { $v } { $body_b } solidoaren { $point } puntuaren abiadura da { $body_a } solidotik ikusita{ WORD($rate) ->
+data-relative = Magnitude erlatibo baten notazioak bi solidoak adierazten ditu: { $v } { $body_b } solidoaren { $point } puntuaren abiadura da { $body_a } solidotik ikusita{ WORD($rate) ->
         [yes] , eta { $w } { $body_b } solidoaren abiadura angeluarra { $body_a } solidoarekiko.
        *[no] .
     }
@@ -18,6 +18,7 @@ data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko esk
 data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
 data-symbol = ikur bat (edozein balio)
 data-constructed = eraikuntzaz kokatua (ikus Posizioa)
+data-circles = zentroa { $centre }, erradioak { $radii }
 data-circle = zentroa { $centre }, erradioa { $radius }
 data-line = { $through } puntutik, { $direction } norabidean
 data-plane = { $through } puntutik, { $direction } normalarekin
@@ -55,11 +56,8 @@ structure-frame_ground = { $body }{ SAME($body, $ground) ->
         [yes] {""}
        *[no] {" "}({ $ground })
     }
-# the fixed body with no shape: named otherwise than the ground (a ceiling), the ground's word the text uses is tied to it (twenty-second round b)
-structure-frame_named = { $body } { SAME($body, $ground) ->
-        [yes] (finkoa)
-       *[no] ({ $ground }, finkoa)
-    }
+# the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
+structure-frame_named = { $body } (finkoa)
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
         [one] dago: haren zati da eta ez da mugitzen
        *[other] daude: haren zati dira eta ez dira mugitzen
@@ -82,6 +80,16 @@ structure-dof = Mekanismoak { $dof ->
         [3] hiru askatasun-gradu ditu
        *[other] { $dof } askatasun-gradu ditu
     }.
+structure-dof_data = Mekanismoak { $dof ->
+        [one] askatasun-gradu bat du
+        [2] bi askatasun-gradu ditu
+        [3] hiru askatasun-gradu ditu
+       *[other] { $dof } askatasun-gradu ditu
+    }, datu bakoitzeko bat ({ $data }); enuntziatuak { $whole } abiaduraren norabidea ere ematen du.
+shape-concentric = { $n ->
+        [2] bi zirkunferentzia zentrokide
+       *[other] { $n } zirkunferentzia zentrokide
+    }
 shape-circle = zirkunferentzia
 shape-line = zuzena
 shape-disc = diskoa
@@ -113,7 +121,7 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
             [2] {", bere moduluarekin ("}{ $unit }/s-tan)
            *[other] {", bere moduluarekin"}
         }
-        [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+        [3] { $points } puntuaren abiadura nulua da une honetan{ $centre }, ondoan idatzita
         [4] { $format ->
             [md] geziak
            *[other] gezi urdinak
@@ -131,6 +139,7 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
            *[other] {", beren moduluekin"}
         }
     }; solidoak zenbakituta daude.
+fig-rest_centre = {" "}({ $body } solidoaren biraketa-zentro instantaneoa da)
 fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
@@ -144,7 +153,7 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
             [2] {", bere moduluarekin ("}{ $unit }/s-tan)
            *[other] {", bere moduluarekin"}
         }
-        [3] { $points } geldi dago: haren abiadura nulua da, ondoan idatzita
+        [3] { $points } puntuaren abiadura nulua da une honetan{ $centre }, ondoan idatzita
         [4] { $format ->
             [md] geziak
            *[other] gezi urdinak
@@ -175,26 +184,32 @@ fig-centre_image = { $count ->
 }
 fig-primed = { $point } puntuaren irudia { $image } da, { $symbol } { $what } baita.
 fig-a_symbol = datu baten ikurra
-fig-polygon_v = Abiaduren poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
-        [md] , terminoak bata bestearen ondoren
-       *[other] : beltzez termino ezagunak{ $unknown ->
+fig-polygon_v = Abiaduren poligonoa, eskalan. Haren terminoak o polotik hasita bata bestearen ondoren marrazten dira{ $result ->
+        [1] , eta haien baturak, { $sym } bektoreak, poligonoa ixten du
+       *[other] {""}
+    }{ $format ->
+        [md] {""}
+       *[other] {" "}(beltzez termino ezagunak{ $unknown ->
             [1] , gorriz urrats honetan aurkitutakoak
            *[other] {""}
         }{ $result ->
-            [1] , urdinez emaitza
+            [1] , urdinez batura
            *[other] {""}
-        }
-    }.
-fig-polygon_a = Azelerazioen poligonoa o polotik, eskalan, erpinak puntuen irudiak direlarik{ $format ->
-        [md] , terminoak bata bestearen ondoren
-       *[other] : beltzez termino ezagunak{ $unknown ->
+        })
+    }. Erpin bakoitza puntu baten irudia da.
+fig-polygon_a = Azelerazioen poligonoa, eskalan. Haren terminoak o polotik hasita bata bestearen ondoren marrazten dira{ $result ->
+        [1] , eta haien baturak, { $sym } bektoreak, poligonoa ixten du
+       *[other] {""}
+    }{ $format ->
+        [md] {""}
+       *[other] {" "}(beltzez termino ezagunak{ $unknown ->
             [1] , gorriz urrats honetan aurkitutakoak
            *[other] {""}
         }{ $result ->
-            [1] , urdinez emaitza
+            [1] , urdinez batura
            *[other] {""}
-        }
-    }.
+        })
+    }. Erpin bakoitza puntu baten irudia da.
 fig-sample = Ikurren lagin-balioekin marraztua.
 sec-position = Posizioa
 pos-intro = Posizio-analisia: puntu mugikor bakoitza enuntziatuak kokatzen duen moduan kokatzen da, aurretik kokatutako puntuetatik abiatuta.
@@ -234,6 +249,20 @@ order-item_group = { $n }. { $bodies }, { $known } { $known_n ->
         [one] solidotik
        *[other] solidoetatik
     }.
+order-item_through = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
+        [one] solidotik
+       *[other] solidoetatik
+    }, { $through } { $through_n ->
+        [one] solidoaren
+       *[other] solidoen
+    } bidez.
+order-item_group_through = { $n }. { $bodies }, { $known } { $known_n ->
+        [one] solidotik
+       *[other] solidoetatik
+    }, { $through } { $through_n ->
+        [one] solidoaren
+       *[other] solidoen
+    } bidez.
 order-item_data = { $n }. { $kind }: { $bodies }, datuetatik.
 order-item_group_data = { $n }. { $bodies }, datuetatik.
 order-from = { $name }
@@ -360,7 +389,7 @@ composition-rolls = { $body } solidoa { $frame } solidoaren gainean errodatzen d
 sec-curvature = Ibilbideen kurbadura
 curvature-intro = Azelerazioa bi zatitan banatzen da: abiaduraren norabideko zati tangentziala eta harekiko perpendikularra den zati normala; kurbadura-erradioa { $rho } da.
 curvature-point = { $point } puntua: abiadura { $v }.
-curvature-rest = { $point } puntua geldirik dago: haren ibilbideak ez du kurbadurarik une honetan.
+curvature-rest = { $point } puntuaren abiadura nulua da une honetan: haren ibilbideak ez du hor kurbadura-erradiorik (ℜ = |v|²/|aⁿ| abiadura bat behar du).
 curvature-straight = { $point } puntuaren azelerazio normala nulua da: haren ibilbidea zuzena da hemen (edo inflexio-puntu bat du).
 curvature-circle = { $point } puntua: { $o } puntu finkoarekiko distantzia mantentzen du; beraz, haren ibilbidea { $o } zentroko eta { $radius } erradioko zirkunferentzia da, eta kurbadura-erradioa erradio hori da:
 curvature-circle_centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $o } puntua da, { $centre } posizioan.
@@ -402,14 +431,17 @@ composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da;
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboa dute: { $sym } = { $value }.
-composition-drag_seen = { $sym } = { $value }, { $step }. urratsean aurkitutako puntu horren mugimendua.
+composition-drag_seen = { $sym } = { $value }, { $frame } solidoaren { $point } puntuarekin bat datorren puntuaren { WORD($kind) ->
+        [accel] azelerazioa
+       *[speed] abiadura
+    }, { $step }. urratsean aurkitua.
 composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
-composition-sum_seen = Beraz, { $sym } = { $terms } { $step }. urratseko ekuazioa da, { $seen } aurkitu zuena.
+composition-sum_seen = Beraz, { $sym } = { $terms } da { $step }. urratsean { $seen } aurkitzeko erabilitako ekuazioa.
 composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa: { $vel } = 0 denez (errodadura-kontaktua), Coriolisen bi terminoak nuluak dira, eta, beraz, bi azelerazio erlatiboak aurkakoak dira.
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa. Bi azelerazio erlatiboen arteko aldea Coriolisen terminoak dira, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, eta hemen nuluak dira, { $vel } = 0 baita (errodadura-kontaktua).
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)

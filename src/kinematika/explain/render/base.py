@@ -542,8 +542,7 @@ class Renderer(ABC):
     # the model's words and notation -----------------------------------------------------------
     def called(self, n: Name) -> str:
         """A body's name in the reader's language (the model's `names`), else the model's."""
-        if (n.kind == "body" and n.reference and (self.doc.ground_part or n.centre)
-                and self.cat.has("ground.word")):
+        if n.kind == "body" and n.reference and self.doc.ground_part and self.cat.has("ground.word"):
             return self.cat.get("ground.word")           # the reference, named as the notes name it
         if n.kind == "body":
             return self.wording.body(n.text, self.lang)
@@ -1110,13 +1109,13 @@ class Renderer(ABC):
                 "side": Msg(f"side.{c.side}", {"q": Name(q)})}
 
     def frame_name(self, body: str) -> Name:
-        """A body as the reference of a motion: the fixed one is the ground (`Name.reference`),
-        said with the ground's word (`Name.centre`) whatever the model calls it — a centre
-        placed from velocities reads absolute velocities, which the page says "relative to the
-        ground" everywhere else (issue 30, twenty-first round (b): C5-1.5's "relative to the
-        *ceiling*", C5-1.4's "respecto del *bastidor*" beside "respecto del *suelo*")."""
+        """A body as the reference of a motion: the fixed one as a reference (`Name.reference`),
+        named as every other sentence of the page names it — its own name (*bastidor*,
+        *techo*), or the ground's word where the ground is named after a part of it (issue 30,
+        twenty-first round (b): one word for it on a page; twenty-seventh round (e): that word
+        the body's own, never "*bastidor* (fijo: el *suelo*)", which reads as two bodies)."""
         fixed = body == self.doc_frame()
-        return Name(body, "body", reference=fixed, centre=fixed)
+        return Name(body, "body", reference=fixed)
 
     def doc_frame(self) -> str:
         """The fixed body (numbered 1)."""
