@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import re
 
-
 from .helpers import LANGS, SEEDS, over, plain_page, model_tree
 
 # the reference of a motion as each language writes it, the body's name captured
@@ -30,7 +29,7 @@ def test_the_fixed_body_has_one_name_where_it_is_a_reference(name: str, lang: st
     never "respecto del *suelo*" beside "*bastidor* (fijo)"); a ground named after a part of
     it with a shape (C5-1.6's fixed pulley) is the ground, as the notes say."""
     own = _ground_name(name, lang)
-    model = yaml.safe_load((EXAMPLES / f"{name}.yaml").read_text())
+    model = model_tree(name)
     ground = (model.get("bodies") or {}).get("ground")
     shaped = isinstance(ground, dict) and any(k in ground for k in ("circle", "line", "circles", "lines"))
     if not own or own.startswith(WORD[lang]) or shaped:
