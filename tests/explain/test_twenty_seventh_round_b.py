@@ -174,7 +174,7 @@ def test_the_straight_run_is_what_translates(name, lang):
 def test_two_parallel_velocities_name_whose_points_move(name, lang):
     """A centre found from two parallel velocities says whose points they are and writes
     their velocities as the steps do (C5-1.5: "the points T4 and C3 of *pulley 3* move,
-    relative to the *ground*, at v_{T4∈pulley3} = (0, 2·v) and v_C3 = (0, −2·v)")."""
+    relative to the *ceiling*, at v_{T4∈pulley3} = (0, 2·v) and v_C3 = (0, −2·v)")."""
     _, doc = explained(name)
     from kinematika.explain.document import CentreNote
 
@@ -264,6 +264,6 @@ def test_the_belt_and_the_pulleys_by_hand():
     assert "els eixos són fixos i el tram recte de la *corretja* es trasllada" in belt
     assert "ω_corretja = ω_braç (el tram recte de la *corretja* es trasllada respecte del *braç*) = ω" in belt
     pulleys = rendered("seed_c5_1_5_pulley_block", "ca", drawings=False)
-    assert ("I_politja3: els punts T4 i C3 de la *politja 3* es mouen, respecte del *terra*, amb "
+    assert ("I_politja3: els punts T4 i C3 de la *politja 3* es mouen, respecte del *sostre*, amb "
             "v_{T4∈politja3} = (0; 2·v) i v_C3 = (0; −2·v)") in pulleys
     assert "a r/2 de C3" in pulleys

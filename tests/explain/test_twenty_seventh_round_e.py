@@ -222,14 +222,15 @@ def test_the_readers_wordings() -> None:
 def test_the_bar_oq_is_found_through_the_wheels() -> None:
     """C5-1.2: I_OQ is where the normals to the planes through the wheels' centres O and Q
     meet (each wheel turns about its contact with its plane), so the bar is found from the
-    planes through the wheels; the wheels' own rates come after, from the bar."""
-    said = {"en": "1. The *bar OQ*, from the *left plane* and the *right plane*, through the *left wheel* and the *right wheel*.",
-            "es": "1. La *barra OQ*, a partir del *plano izquierdo* y del *plano derecho*, a través de la *rueda izquierda* "
-                  "y de la *rueda derecha*.",
-            "ca": "1. La *barra OQ*, a partir del *pla esquerre* i del *pla dret*, a través de la *roda esquerra* i de la "
-                  "*roda dreta*.",
-            "eu": "1. *OQ barra*, *ezkerreko planoa* eta *eskuineko planoa* solidoetatik, *ezkerreko gurpila* eta "
-                  "*eskuineko gurpila* solidoen bidez."}
+    planes through the wheels, and the order of solution must not skip them (a Catalan
+    reader: "a partir del pla esquerre i del pla dret" alone). Since the twenty-seventh round
+    (b) the wheels are solved in the bar's own step, so its line names them beside the bar."""
+    said = {"en": "1. The *bar OQ*, the *left wheel*, and the *right wheel*, from the *left plane* and the *right plane*.",
+            "es": "1. La *barra OQ*, la *rueda izquierda* y la *rueda derecha*, a partir del *plano izquierdo* y del "
+                  "*plano derecho*.",
+            "ca": "1. La *barra OQ*, la *roda esquerra* i la *roda dreta*, a partir del *pla esquerre* i del *pla dret*.",
+            "eu": "1. *OQ barra*, *ezkerreko gurpila* eta *eskuineko gurpila*, *ezkerreko planoa* eta *eskuineko planoa* "
+                  "solidoetatik."}
     for lang, text in said.items():
         assert text in plain_page("seed_c5_1_2_bar_on_inclined_wheels", lang), lang
 
