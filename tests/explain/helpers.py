@@ -165,8 +165,9 @@ NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
 # every language; Markdown with its drawings), and what was recorded, by (seed, language):
 # {"labels": [(placed, tips, px) of each label layout, display units], "polygons": [(layout,
 # items, placed) of each polygon], "drawings": [(placed, `Layout`) of each label layout of a
-# mechanism drawing, the lines drawn under it its `recorded_lines`], …: `_recording`}. The layout rules read English and Catalan, whose words
-# are the longest (`RECORDED_LANGS`); the drawn lines are read in all four.
+# mechanism drawing, with the lines drawn under it as the layout's `recorded_lines`], …:
+# `_recording`}. The layout rules read English and Catalan, whose words are the longest
+# (`RECORDED_LANGS`); the drawn lines are read in all four.
 RECORDED_LANGS = ("en", "ca")
 RECORDED = frozenset((name, lang, "md", True) for name in NOTES_SEEDS for lang in LANGS)
 _LAYOUTS: dict[tuple[str, str], dict[str, list]] = {}

@@ -569,7 +569,12 @@ def covered_part(boxes: np.ndarray, paths: list) -> np.ndarray:
     pts = np.column_stack([xs.ravel(), ys.ravel()])
     inside = np.zeros(len(pts), bool)
     for path in paths:
-        inside |= path.contains_points(pts)
+        near = np.arange(len(pts))
+        if np.isfinite(path.vertices).all():                  # a point beyond its vertices' box is outside
+            lo, hi = path.vertices.min(axis=0), path.vertices.max(axis=0)
+            near = near[np.all((pts >= lo) & (pts <= hi), axis=1)]
+        if len(near):
+            inside[near] |= path.contains_points(pts[near])
     return inside.reshape(len(boxes), -1).mean(axis=1)
 
 
@@ -643,21 +648,36 @@ def _segments_in_boxes(segs: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     keeps a part of positive length."""
     if not len(segs) or not len(boxes):
         return np.zeros(len(boxes))
-    return _segment_hits(segs, boxes).sum(axis=1).astype(float)
+    return _segment_hits(_meeting(segs, boxes), boxes).sum(axis=1).astype(float)
+
+
+def _meeting(segs: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """The segments (M, 2, 2) whose bounding box meets the bounding box of all the `boxes`
+    (a label's candidates, clustered about its anchor): a segment clear of it passes through
+    none of them (its slabs' interval lies outside [0, 1]), so the counts are the same over
+    these alone."""
+    lo, hi = boxes[:, :2].min(axis=0), boxes[:, 2:].max(axis=0)
+    return segs[np.all((segs.max(axis=1) >= lo) & (segs.min(axis=1) <= hi), axis=1)]
 
 
 def _segment_hits(segs: np.ndarray, boxes: np.ndarray) -> np.ndarray:
     """(K, M): whether each of the segments (M, 2, 2) passes through each box (K, 4), clipped
     to the box by its slabs (Liang–Barsky) keeping a part of positive length."""
-    p, d = segs[:, 0][None], (segs[:, 1] - segs[:, 0])[None]         # (1, M, 2)
-    lo, hi = boxes[:, None, :2], boxes[:, None, 2:]                  # (K, 1, 2)
+    # only the pairs whose bounding boxes meet are clipped: a segment clear of a box's
+    # bounding box has its slabs' interval outside [0, 1] (the same verdict, computed alone)
+    meet = np.all((segs.max(axis=1)[None] >= boxes[:, None, :2]) & (segs.min(axis=1)[None] <= boxes[:, None, 2:]),
+                  axis=2)                                            # (K, M)
+    k, m = np.nonzero(meet)
+    p, d = segs[m, 0], segs[:, 1][m] - segs[:, 0][m]                 # (N, 2), each pair's segment
+    lo, hi = boxes[k, :2], boxes[k, 2:]                              # (N, 2), its box
     with np.errstate(divide="ignore", invalid="ignore"):
         t1, t2 = (lo - p) / d, (hi - p) / d
     flat = np.abs(d) < 1e-12                                         # parallel to a slab: inside it or never
     inside = (p >= lo) & (p <= hi)
     t_in = np.where(flat, np.where(inside, -np.inf, np.inf), np.minimum(t1, t2))
     t_out = np.where(flat, np.where(inside, np.inf, -np.inf), np.maximum(t1, t2))
-    return np.minimum(t_out.min(axis=-1), 1.0) - np.maximum(t_in.max(axis=-1), 0.0) > 1e-9
+    meet[k, m] = np.minimum(t_out.min(axis=-1), 1.0) - np.maximum(t_in.max(axis=-1), 0.0) > 1e-9
+    return meet
 
 
 def trimmed(segs: np.ndarray, end: float) -> np.ndarray:
@@ -700,12 +720,11 @@ def _lines_in_boxes(segs: np.ndarray, line: np.ndarray, boxes: np.ndarray) -> np
     segs, line = segs[near], line[near]
     if not len(segs):
         return np.zeros(len(boxes))
-    ids, which = np.unique(line, return_inverse=True)
+    order = np.argsort(line, kind="stable")                          # each line's segments together
+    segs, line = segs[order], line[order]
+    first = np.flatnonzero(np.r_[True, line[1:] != line[:-1]])       # where each line's run begins
     hits = _segment_hits(segs, boxes)                                # (K, M)
-    per_line = np.zeros((len(boxes), len(ids)), bool)
-    for k in range(len(ids)):
-        per_line[:, k] = hits[:, which == k].any(axis=1)
-    return per_line.sum(axis=1).astype(float)
+    return np.logical_or.reduceat(hits, first, axis=1).sum(axis=1).astype(float)
 
 
 def _drawn_lines(obstacles: list, owners: list, transform: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -779,8 +798,17 @@ def _arrows_crossed(starts: np.ndarray, ends: np.ndarray, segs: np.ndarray, pad:
         t = np.clip(((x - u) * uv).sum(axis=-1) / np.maximum((uv * uv).sum(axis=-1), 1e-12), 0, 1)
         return np.linalg.norm(u + t[..., None] * uv - x, axis=-1)
     crossed = (side(a, b, p) * side(a, b, q) < 0) & (side(p, q, a) * side(p, q, b) < 0)
-    near = np.minimum.reduce([off(q, a, b), off(a, p, q), off(b, p, q)]) <= pad
-    return ((crossed | near) & (off(p, a, b) > pad)).sum(axis=1).astype(float)
+    # the distances only for the pairs whose bounding boxes lie within `pad` (and a pixel) of
+    # each other: any other is farther than `pad` everywhere (not near, and the leader does
+    # not start on it), so it counts if it is crossed, as when every distance was measured
+    gap = np.maximum(segs.min(axis=1)[None] - np.maximum(starts, ends)[:, None],
+                     np.minimum(starts, ends)[:, None] - segs.max(axis=1)[None]).max(axis=2)   # (K, M)
+    k, m = np.nonzero(gap <= pad + 1.0)
+    near, clear = np.zeros(crossed.shape, bool), np.ones(crossed.shape, bool)
+    pk, qk, ak, bk = starts[k], ends[k], segs[m, 0], segs[m, 1]
+    near[k, m] = np.minimum.reduce([off(qk, ak, bk), off(ak, pk, qk), off(bk, pk, qk)]) <= pad
+    clear[k, m] = off(pk, ak, bk) > pad
+    return ((crossed | near) & clear).sum(axis=1).astype(float)
 
 
 def _annotation(ax: Any, p: Placement) -> Any:
