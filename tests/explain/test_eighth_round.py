@@ -173,8 +173,8 @@ def test_no_centre_says_what_the_joints_do_not_do(name, lang):
     assert not any(w in page for w in LEAD_INS), name
 
 
-@pytest.mark.parametrize("lang,said", [("en", "I_pulley3: relative to the *ground*, T4 moves at (0, 2·v)"),
-                                       ("eu", "I_polea3: *lurrarekiko*, T4 puntuak (0; 2·v) abiadura du")])
+@pytest.mark.parametrize("lang,said", [("en", "I_{pulley3}: relative to the *ground*, T4 moves at (0, 2·v)"),
+                                       ("eu", "I_{polea3}: *lurrarekiko*, T4 puntuak (0; 2·v) abiadura du")])
 def test_the_third_pulleys_centre_from_its_two_velocities(lang, said):
     assert said in rendered("seed_c5_1_5_pulley_block", lang, drawings=False)
 

@@ -71,7 +71,7 @@ def test_the_epicyclic_planet_by_hand():
 
 @pytest.mark.parametrize("name, lang, equation", [
     ("seed_c5_e2_gear_change", "ca", "v_{N∈corona}  =  v_O  +  v_NO"),
-    ("seed_c5_1_1_pulley_on_cable", "ca", "v_{J∈tram esquerre}  =  v_G1  +  v_JG1"),
+    ("seed_c5_1_1_pulley_on_cable", "ca", "v_{J∈tram1}  =  v_G1  +  v_JG1"),
     ("seed_001_rolling_pair", "en", "v_{F∈R}  =  v_A  +  v_FA"),
     ("seed_c5_e1_cavity", "ca", "v_C  =  v_O  +    v_CO"),
     ("seed_c5_e1_cavity", "ca", "a_C  =  a_O  +   a_CO^n   +   a_CO^t"),
@@ -94,7 +94,7 @@ def test_no_centre_is_said_with_an_equivalence_sign(name, lang):
 
 def test_the_pulleys_centre_sentence():
     ca = rendered("seed_c5_1_1_pulley_on_cable", "ca", "md", drawings=False)
-    assert "I_politja, trobat a «Centres instantanis de rotació (CIR)», no té velocitat: v_{I_politja} = 0." in ca   # one symbol (round 15a)
+    assert "I_{politja}, trobat a «Centres instantanis de rotació (CIR)», no té velocitat: v_{I_{politja}} = 0." in ca   # one symbol (round 15a)
 
 
 # ---- 3. said once -----------------------------------------------------------------------
