@@ -38,14 +38,15 @@ def test_the_two_bars_centres_are_their_symbols(lang):
     """C5-1.2, by hand: the bars OQ and OJ have their centres placed before the velocities,
     two on one page, so each is written as its own symbol, I_OQ and I_OJ (the subscripts the
     model's Basque, Catalan, Spanish and English names give: OQ barra, barra OQ …), in the
-    velocity steps: v_{I_OQ} = 0 and the segment OI_{OQ} (a velocity to it v_{O,I_OQ}, no
-    subscript inside a subscript: sixteenth round); never "I_OQ ≡ I_OQ"."""
+    velocity steps: v_{I_{OQ}} = 0 and the segment OI_{OQ}, a velocity to it v_{OI_{OQ}} (one
+    style for the centre on the page, its subscript in braces: twenty-seventh round (g), where
+    the sixteenth round wrote v_{O,I_OQ} beside I_{OQ}O); never "I_OQ ≡ I_OQ"."""
     text = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, "md", drawings=False)
     for bar in ("OQ", "OJ"):
-        assert f"v_{{I_{bar}}} = (0" in text, (lang, bar)
+        assert f"v_{{I_{{{bar}}}}} = (0" in text, (lang, bar)
         # the direction in the term's own order, O then I (twenty-fourth round (c))
-        assert f"v_{{O,I_{bar}}}" in text and f"⊥ OI_{{{bar}}}" in text, (lang, bar)
-        assert f"I_{bar} ≡" not in text
+        assert f"v_{{OI_{{{bar}}}}}" in text and f"⊥ OI_{{{bar}}}" in text, (lang, bar)
+        assert f"I_{{{bar}}} ≡" not in text and f"I_{bar}" not in text
     html = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang, "html", drawings=False)
     assert '<sub><i>I</i><sub>OQ</sub></sub>' in html          # v with the subscript I_OQ, nested
 

@@ -45,10 +45,10 @@ def test_a_gear_meshes():
     gear contact is not a centre; here the page says the pitch circles."""
     es = plain_page("seed_c5_e2_gear_change", "es").replace("*", "")
     assert "sin deslizar sobre la rueda central fija" not in es
-    assert "I_{satélite superior}: el contacto J de las circunferencias primitivas" in es
+    assert "I_{satélite1}: el contacto J de las circunferencias primitivas" in es
     en = plain_page("seed_c5_e2_gear_change", "en")
     assert not re.search(r"rolls?( without slipping)? on the \*?fixed", en)
-    assert "I_{upper planet}: the contact J of the pitch circles" in en
+    assert "I_{planet1}: the contact J of the pitch circles" in en
 
 
 @over(name=["seed_c5_1_4_epicyclic", "seed_c5_e2_gear_change"])

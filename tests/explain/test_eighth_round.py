@@ -172,9 +172,9 @@ def test_no_centre_says_what_the_joints_do_not_do(name, lang):
     assert not any(w in page for w in LEAD_INS), name
 
 
-@pytest.mark.parametrize("lang,said", [("en", "I_pulley3: the points T4 and C3 of *pulley 3* move, relative to the *ceiling*, "
+@pytest.mark.parametrize("lang,said", [("en", "I_{pulley3}: the points T4 and C3 of *pulley 3* move, relative to the *ceiling*, "
                                               "at v_{T4∈pulley3} = (0, 2·v)"),
-                                       ("eu", "I_polea3: *3. polearen* T4 eta C3 puntuek, *sabaiarekiko*, v_{T4∈polea3} = (0; 2·v)")])
+                                       ("eu", "I_{polea3}: *3. polearen* T4 eta C3 puntuek, *sabaiarekiko*, v_{T4∈polea3} = (0; 2·v)")])
 def test_the_third_pulleys_centre_from_its_two_velocities(lang, said):
     assert said in rendered("seed_c5_1_5_pulley_block", lang, drawings=False)
 

@@ -48,7 +48,7 @@ def test_the_pulleys_centre_is_said_once_by_its_symbol(lang):
     starts there."""
     page = rendered("seed_c5_1_1_pulley_on_cable", lang, "md", drawings=False)
     line = next(ln for ln in page.splitlines() if FOUND[lang] in ln)
-    centre = re.search(r"I_(\w+)", line).group(0)
+    centre = re.search(r"I_\{(\w+)\}", line).group(0)         # I_{pulley} (twenty-seventh round (g))
     assert line.endswith(f"v_{{{centre}}} = 0.")
     assert line.count("I_") == 2
     # columns as wide as their marks (eu's worded "norab" on a page with a point D: round 16f)
@@ -137,8 +137,9 @@ def test_the_sine_is_renamed_only_as_a_call():
 
 # ---- 5. C5-E.4: the right wheel's ω --------------------------------------------------------
 
-RIGHT = {"en": "right wheel", "es": "rueda derecha", "ca": "roda dreta", "eu": "eskuineko gurpila"}
-LEFT = {"en": "left wheel", "es": "rueda izquierda", "ca": "roda esquerra", "eu": "ezkerreko gurpila"}
+# the wheels' short indices, declared in the notation line (twenty-seventh round (g))
+RIGHT = {"en": "wheel2", "es": "rueda2", "ca": "roda2", "eu": "gurpila2"}
+LEFT = {"en": "wheel1", "es": "rueda1", "ca": "roda1", "eu": "gurpila1"}
 
 
 @pytest.mark.parametrize("lang", LANGS)
@@ -147,7 +148,7 @@ def test_the_right_wheels_rate_is_derived_and_answered(lang):
     (radius R) rolls on the ground at K below A2: v_A2 = ω × KA2 = (−ω·R, 0), ω = v/R
     (counter-clockwise), from its own equation at K, and in the answers after the left wheel's."""
     page = rendered("seed_c5_e4_upper_wheel", lang, "md", drawings=False)
-    right, left = f"ω_{{{RIGHT[lang]}}}", f"ω_{{{LEFT[lang]}}}"
+    right, left = f"ω_{RIGHT[lang]}", f"ω_{LEFT[lang]}"
     assert f"v_A2K = −{right}·KA2 ⇒ {right} = v/R" in page      # its x component (twenty-fifth round d)
     assert f"| {right} | v/R |" in page
     assert page.index(f"| {left} | v/R |") < page.index(f"| {right} | v/R |")
@@ -175,7 +176,7 @@ def test_the_articulated_chassis_centre_names_the_axle_once(lang):
     page = rendered("seed_c5_2_2_articulated", lang, "md", drawings=False)
     assert page.count(ALSO[lang]) == 1
     line = next(ln for ln in page.splitlines() if ALSO[lang] in ln)
-    assert "I_S2 = (0" in line and "v_O" in line
+    assert "I_{S2} = (0" in line and "v_O" in line
 
 
 # ---- 7. the pin common to the two bodies ----------------------------------------------------

@@ -170,7 +170,7 @@ def test_the_tied_strand_is_a_part_welded_to_the_ceiling():
     name of the fixed body on the page (sixth round: the ceiling carries no shape of its own)."""
     ca = rendered("seed_c5_1_5_pulley_block", "ca", drawings=False)
     assert "| 2 | *tram 1* (fix al *sostre*) |" in ca
-    assert "I_politja1: el punt de contacte J (rodolament sense lliscament)" in ca   # the centre, said once (17a)
+    assert "I_{politja1}: el punt de contacte J (rodolament sense lliscament)" in ca   # the centre, said once (17a)
     # an absolute centre is said relative to the ceiling, the fixed body's one name on the page
     # (twentieth round (b) said the ground; twenty-seventh round (e): a page with no floor)
     assert "CIR de la *politja 3* respecte del *sostre*" in ca and "CIR de la *politja 3* respecte del *terra*" not in ca

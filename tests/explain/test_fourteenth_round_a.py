@@ -111,9 +111,10 @@ def test_the_meshing_wheels_symbol_is_its_distinguishing_word(name, lang, symbol
 
 def test_a_wheel_word_stays_where_no_wheels_mesh():
     """Rule 3 is narrow: C5-1.8's single wheel keeps ω_wheel; E.4's wheels, which share the
-    word, keep their whole names (ω_{upper wheel})."""
+    word, are that word with their ranks (ω_wheel3 for the upper wheel: twenty-seventh round
+    (g), where they kept their whole names, ω_{upper wheel})."""
     assert "ω_wheel" in page("seed_c5_1_8_contact_points", "en")
-    assert "ω_{upper wheel}" in page("seed_c5_e4_upper_wheel", "en")
+    assert "ω_wheel3 " in page("seed_c5_e4_upper_wheel", "en")
 
 
 @pytest.mark.parametrize("lang", LANGS)

@@ -24,7 +24,8 @@ def test_a_symbol_in_a_models_words_is_set_as_a_symbol(lang, typed):
     page = rendered("seed_c5_e6_bicycle", lang, "tex", drawings=False)
     assert typed in page
     # the remark writes the page's v_P since the twenty-fourth round (e) (was the notes' v(P))
-    assert r"$\Re_{\mathrm{P}}$ = $v_{\mathrm{P}}$$^2$/a$^n$" in page
+    normal = "N" if lang == "eu" else "n"        # the Basque slides' a^N (twenty-seventh round (g))
+    assert rf"$\Re_{{\mathrm{{P}}}}$ = $v_{{\mathrm{{P}}}}$$^2$/a$^{normal}$" in page
     w = {"eu": "gurpila", "ca": "roda"}[lang]         # the model's R_roda per language
     assert "R_{" + w + "}" not in page and r"R_{\mathrm{" + w + "}}" in page
 

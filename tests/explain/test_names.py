@@ -80,12 +80,13 @@ FOUR = {"points": {"O2": [0, 0], "A": [0, 1], "B": [3, 2], "O4": [4, 0]},
 
 def test_a_bodys_index_is_written_everywhere():
     """notation index(coupler): N — ω_N, v_{B∈N rel 2} (relative to body 2: no slash, which
-    reads as a fraction), I_1N in the text; (N) in the figure's numbering; the other bodies
-    keep their numbers (the model names none)."""
+    reads as a fraction), I_{1N} in the text (a centre's subscript in braces: twenty-seventh
+    round (g)); (N) in the figure's numbering; the other bodies keep their numbers (the model
+    names none)."""
     sol = kinematika.solve({**FOUR, "notation": {"index(coupler)": "N"}})
     doc = build(sol)
     text = render(doc, "en", "md", drawings=False)
-    assert "ω_N" in text and "v_{B∈N rel 2}" in text and "I_1N" in text and "ω_3" not in text
+    assert "ω_N" in text and "v_{B∈N rel 2}" in text and "I_{1N}" in text and "ω_3" not in text
     from kinematika.draw.build import build_scene
     from kinematika.draw.scene import numbering
     from kinematika.draw.options import DrawOptions

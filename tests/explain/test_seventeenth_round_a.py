@@ -46,12 +46,13 @@ def test_a_velocity_about_the_centre_is_the_notes_composition(name: str, lang: s
     """Each equation about the chassis' centre is v_P = v_{I_b} + v_{P I_b} (v_{I_b} = 0),
     never the one-term v_P = v_PI."""
     page = _page(name, lang)
-    # Markdown writes the velocity about a centre as the notes' v_{F,I_b} (sixteenth round (g))
-    lines = [ln for ln in page.splitlines() if re.search(r"v_\{\w+,I_", ln) and "  =  " in ln]
+    # Markdown writes the velocity about a centre as the segment to it, v_{FI_{b}}, the centre
+    # braced as everywhere on the page (twenty-seventh round (g); sixteenth round: v_{F,I_b})
+    lines = [ln for ln in page.splitlines() if re.search(r"v_\{\w+I_\{", ln) and "  =  " in ln]
     assert lines, (name, lang)
     for ln in lines:
-        assert re.search(r"=\s+v_\{I_\w+\}\s+\+\s+v_\{\w+,I_", ln), (name, lang, ln)
-    assert re.search(r"v_\{I_\w+\} = 0", page), (name, lang)
+        assert re.search(r"=\s+v_\{I_\{\w+\}\}\s+\+\s+v_\{\w+I_\{", ln), (name, lang, ln)
+    assert re.search(r"v_\{I_\{\w+\}\} = 0", page), (name, lang)
 
 
 # -- 2. a result derived once ------------------------------------------------------------------
@@ -90,8 +91,8 @@ def test_a_centre_a_step_found_is_not_written_again(name: str, lang: str) -> Non
 
 
 def test_the_reader_s_centres_name_their_step() -> None:
-    for name, lang, line in (("seed_c5_1_5_pulley_block", "ca", "I_politja3: trobat al pas 3"),
-                             ("seed_c5_2_1_tricycle", "en", "I_chassis: placed in Step 1")):
+    for name, lang, line in (("seed_c5_1_5_pulley_block", "ca", "I_{politja3}: trobat al pas 3"),
+                             ("seed_c5_2_1_tricycle", "en", "I_{chassis}: placed in Step 1")):
         assert line in _page(name, lang), (name, lang)
 
 

@@ -65,8 +65,8 @@ def test_the_bicycle_rear_hub_by_hand():
     r = _sym(sympy.sympify(alpha), "R_roda")
     assert sympy.simplify(alpha + vd / r) == 0
     page = rendered("seed_c5_e6_bicycle", "eu", drawings=False)
-    assert re.search(r"^a_H\s+=\s+α_\{atzeko gurpila\} × G-?H\s*$", page, re.M)
-    assert re.search(r"x norabidean: a_H = −α_\{atzeko gurpila\}·G-?H ⇒ α_\{atzeko gurpila\} = −v̇/R_gurpila", page)
+    assert re.search(r"^a_H\s+=\s+α_gurpila1 × G-?H\s*$", page, re.M)       # gurpila1: 27th round (g)
+    assert re.search(r"x norabidean: a_H = −α_gurpila1·G-?H ⇒ α_gurpila1 = −v̇/R_gurpila", page)
 
 
 # -- 001's rolling pair: the contact section refers to what step 3 wrote ----------------------------------------------
@@ -137,8 +137,9 @@ def test_the_precession_is_tied_to_the_chassis_rate():
     assert sympy.simplify(w - sympy.sqrt(2) * v0 / (2 * big_l)) == 0
     for lang, name in (("eu", "txasisa"), ("ca", "xassís")):
         page = rendered("seed_c5_2_1_tricycle", lang, drawings=False)
-        # the centre in full in the subscript (seventeenth round (a)), the notes' v_{F,I_b} (sixteenth round (g))
-        assert re.search(rf": v_\{{F,I_{name}\}} = ψ̇·L ⇒ ψ̇ = ω_{name} = √2·v₀/\(2·L\)$", page, re.M), lang
+        # the centre in full in the subscript (seventeenth round (a)), as the segment FI_{b}
+        # to it, the centre braced as everywhere on the page (twenty-seventh round (g))
+        assert re.search(rf": v_\{{FI_\{{{name}\}}\}} = ψ̇·L ⇒ ψ̇ = ω_{name} = √2·v₀/\(2·L\)$", page, re.M), lang
         assert f"ω_{name} ×" not in page
     fan = rendered("fan_absolute", "eu", drawings=False)
     assert "ω_1 = ω_" not in fan

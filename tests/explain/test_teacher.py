@@ -75,7 +75,7 @@ def test_no_markdown_mentions_colours(name, lang, monkeypatch):
     ("seed_c5_e4_upper_wheel", "ca", "llisca al llarg d’ella", "el sòlid es trasllada al llarg d’aquesta recta, sense girar"),
     ("seed_c5_e4_upper_wheel", "es", "desliza a lo largo de ella y no gira", "el sólido se traslada a lo largo de ella, sin girar"),
     # the symbol I is named as a symbol: a sentence opening "I amb" reads as the word "and"
-    ("seed_c5_1_4_epicyclic", "ca", "I amb el nom d’un sòlid", "El símbol I, amb el nom d’un sòlid (I_portador), designa el CIR"),
+    ("seed_c5_1_4_epicyclic", "ca", "I amb el nom d’un sòlid", "El símbol I, amb el nom d’un sòlid (I_{portador}), designa el CIR"),
     ("seed_c5_1_4_epicyclic", "es", "I con el nombre", "El símbolo I, con el nombre de un sólido"),
     ("seed_c5_1_4_epicyclic", "en", "\nI with a body's name", "The symbol I with a body's name"),
     # the notes' own word for the planets (seed 002: "el CIR de cada rodeta")
@@ -323,16 +323,16 @@ def test_no_seed_names_aronhold_kennedy(name, lang, monkeypatch):
 @pytest.mark.parametrize("name,lang,line", [
     # C5-1.2: the centres of the wheels move parallel to the inclined planes; OQ's centre is
     # where the perpendiculars to those velocities through the centres meet
-    ("seed_c5_1_2_bar_on_inclined_wheels", "en", "I_OQ: it lies on the perpendicular to v_O through O (O moves with "
+    ("seed_c5_1_2_bar_on_inclined_wheels", "en", "I_{OQ}: it lies on the perpendicular to v_O through O (O moves with "
                                                  "the *left wheel*, which turns about K1) and on the perpendicular to v_Q "
                                                  "through Q (Q moves with the *right wheel*, which turns about K2)"),
     # C5-1.3: on OQ (the perpendicular to v_Q) and on the perpendicular to the bar through J
-    ("seed_c5_1_3_bar_in_sleeve", "ca", "I_barra: és a la perpendicular a v_Q per Q (Q es mou amb l’*element OQ*, que gira "
+    ("seed_c5_1_3_bar_in_sleeve", "ca", "I_{barra}: és a la perpendicular a v_Q per Q (Q es mou amb l’*element OQ*, que gira "
                                         "al voltant d’O) i a la perpendicular a la guia per J"),
     # C5-E.3: the rod's pins move with the wheels about their contacts
-    ("seed_c5_e3_wheels_with_rod", "eu", "I_biela: bi zuzen hauetan dago: A puntuan v_A abiadurarekiko perpendikularra"),
+    ("seed_c5_e3_wheels_with_rod", "eu", "I_{biela}: bi zuzen hauetan dago: A puntuan v_A abiadurarekiko perpendikularra"),
     # C5-1.4: the planet's centre and its contact with the ring, carried about O
-    ("seed_c5_1_4_epicyclic", "en", "I_planet1: A1 moves with the *carrier* about O, and Q with the *ring* about O"),
+    ("seed_c5_1_4_epicyclic", "en", "I_{planet1}: A1 moves with the *carrier* about O, and Q with the *ring* about O"),
 ])
 def test_a_centre_is_found_as_the_notes_find_it(name, lang, line):
     _, doc = explained(name)

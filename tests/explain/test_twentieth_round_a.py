@@ -64,11 +64,11 @@ def test_bicycle_front_wheel_by_hand(lang: str) -> None:
 
 @pytest.mark.parametrize("lang", LANGS)
 def test_inclined_wheels_right_wheel_centre_written(lang: str) -> None:
-    """C5-1.2: Q moves with the bar OQ about I_OQ, so v_Q = v_{I_OQ} + v_{Q,I_OQ} is written
+    """C5-1.2: Q moves with the bar OQ about I_OQ, so v_Q = v_{I_{OQ}} + v_{QI_{OQ}} is written
     (in the bar's step, round 24d) before ω of the right wheel is read off its equation about
     the contact K2 (v_Q = v_{K2∈wheel} + v_QK2, round 27b), and both before the table of rates."""
     page = rendered("seed_c5_1_2_bar_on_inclined_wheels", lang)
-    at = page.index("v_{Q,I_OQ} = ω_OQ × I_{OQ}Q = ")
+    at = page.index("v_{QI_{OQ}} = ω_OQ × I_{OQ}Q = ")
     assert at < page.index("|v_QK2| /")
     # the table comes after the last line read off
     table = page.index("| --- | --- |", page.index("|v_QK2| /") - 3000)

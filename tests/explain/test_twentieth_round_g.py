@@ -79,7 +79,7 @@ def test_pulley_on_cable_by_hand(lang: str) -> None:
     """C5-1.1 as the notes reason: the pulley does not slip on the cable, so its points J, K
     have the strands' velocities; each strand turns about the point where it is tied."""
     page = rendered("seed_c5_1_1_pulley_on_cable", lang)
-    line = next(x for x in page.splitlines() if x.startswith(("I_pulley", "I_polea", "I_politja")))
+    line = next(x for x in page.splitlines() if x.startswith(("I_{pulley}", "I_{polea}", "I_{politja}")))
     assert line.count(NO_SLIP[lang]) == 2, line
     assert re.search(r"\(J (moves with|se mueve con|es mou amb|puntua)", line) is None, line
     assert "G1" in line and "G2" in line

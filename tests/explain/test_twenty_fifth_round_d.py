@@ -82,12 +82,13 @@ def test_d_the_bicycle_rear_wheel_by_hand() -> None:
     v̇ = −α·R_wheel and α = −v̇/R_wheel; v_H = (v, 0): ω = −v/R_wheel. The front wheel alike:
     its centre F moves as H, R_wheel above its contact."""
     pages = {lang: rendered("seed_c5_e6_bicycle", lang, drawings=False) for lang in LANGS}
-    assert "along x: a_H = −α_{rear wheel}·GH ⇒ α_{rear wheel} = −v̇/R_wheel" in pages["en"]
-    assert "along x: v_HG = −ω_{rear wheel}·GH ⇒ ω_{rear wheel} = −v/R_wheel" in pages["en"]
-    assert "along x: a_F = −α_{front wheel}·JF ⇒ α_{front wheel} = −v̇/R_wheel" in pages["en"]    # its own equation (round 27b)
-    assert "segons x: a_H = −α_{roda posterior}·GH ⇒ α_{roda posterior} = −v̇/R_roda" in pages["ca"]
-    assert "según x: a_H = −α_{rueda trasera}·GH ⇒ α_{rueda trasera} = −v̇/R_rueda" in pages["es"]
-    assert "x norabidean: a_H = −α_{atzeko gurpila}·GH ⇒ α_{atzeko gurpila} = −v̇/R_gurpila" in pages["eu"]
+    # the rear wheel is wheel 1 and the front wheel 2 of the page's notation line (27th round (g))
+    assert "along x: a_H = −α_wheel1·GH ⇒ α_wheel1 = −v̇/R_wheel" in pages["en"]
+    assert "along x: v_HG = −ω_wheel1·GH ⇒ ω_wheel1 = −v/R_wheel" in pages["en"]
+    assert "along x: a_F = −α_wheel2·JF ⇒ α_wheel2 = −v̇/R_wheel" in pages["en"]    # its own equation (round 27b)
+    assert "segons x: a_H = −α_roda1·GH ⇒ α_roda1 = −v̇/R_roda" in pages["ca"]
+    assert "según x: a_H = −α_rueda1·GH ⇒ α_rueda1 = −v̇/R_rueda" in pages["es"]
+    assert "x norabidean: a_H = −α_gurpila1·GH ⇒ α_gurpila1 = −v̇/R_gurpila" in pages["eu"]
     for page in pages.values():
         assert "|a_H|" not in page and "|v_HG|" not in page
 
@@ -103,7 +104,7 @@ def test_d_the_cavity_and_an_oblique_arm_by_hand() -> None:
     assert "along x: a_C^t = α_wheels·JC ⇒ α_wheels = −2·θ̈" in e1
     assert "along x: v_CJ = ω_wheels·JC ⇒ ω_wheels = −2·θ̇" in e1
     planets = rendered("seed_c5_1_4_epicyclic", "en", drawings=False)
-    assert ("I_{planet2}S = (3·√3·r/10, 3·r/10); along x: v_{S,I_planet2} = −ω_planet2·(3·r/10) "
+    assert ("I_{planet2}S = (3·√3·r/10, 3·r/10); along x: v_{SI_{planet2}} = −ω_planet2·(3·r/10) "
             "⇒ ω_planet2 = −5·ω") in planets
 
 
@@ -141,10 +142,10 @@ def test_d_the_rod_centre_by_hand() -> None:
     """C5-E.3: the rod turns about I_rod (its velocity zero); the velocity polygon's caption
     names it with the wheels' contacts, and v_{I_rod} = 0 with theirs."""
     en = rendered("seed_c5_e3_wheels_with_rod", "en", drawings=False)
-    assert ("j∈left wheel, k∈right wheel, and the image of the instant centre I_rod are at the pole o, "
-            "since v_{J∈left wheel} = v_{K∈right wheel} = v_{I_rod} = 0.") in en
+    assert ("j∈wheel1, k∈wheel2, and the image of the instant centre I_{rod} are at the pole o, "
+            "since v_{J∈wheel1} = v_{K∈wheel2} = v_{I_{rod}} = 0.") in en
     ca = rendered("seed_c5_e3_wheels_with_rod", "ca", drawings=False)
-    assert "j∈roda esquerra, k∈roda dreta i la imatge del CIR I_biela són al pol o" in ca
+    assert "j∈roda1, k∈roda2 i la imatge del CIR I_{biela} són al pol o" in ca
 
 
 @over(name=SEEDS, lang=LANGS)

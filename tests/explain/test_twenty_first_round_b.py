@@ -136,4 +136,4 @@ def test_a_step_writes_its_equations_before_the_centre_that_reads_them() -> None
         _centre_before_equation(doc.sections, bad)
         assert not bad, (name, bad)
     page = plain_page("seed_c5_1_4_epicyclic", "en")
-    assert page.index("v_SO = ω_ring × OS") < page.index("I_planet1: A1 moves with the *carrier*")
+    assert page.index("v_SO = ω_ring × OS") < page.index("I_{planet1}: A1 moves with the *carrier*")

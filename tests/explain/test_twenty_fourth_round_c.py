@@ -119,7 +119,7 @@ TAIL = re.compile(r"·([A-Z][A-Za-z0-9′]*)$")
 def _own(sub: str) -> str:
     """The segment a term's subscript names, its points in its order: a_{J^{geom}O}^n → JO,
     v_{AF rel N} → AF, v_{C1-J1} → C1J1."""
-    sub = re.sub(r"\^\{?[nt]\}?$", "", sub)
+    sub = re.sub(r"\^\{?[ntNT]\}?$", "", sub)          # Basque a^N, a^T (twenty-seventh round (g))
     sub = re.sub(r"\^\{geom\}", "", sub).strip("{}")
     return sub.split(" rel ")[0].replace("-", "")
 

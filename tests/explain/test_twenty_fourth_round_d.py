@@ -76,13 +76,14 @@ def test_d_the_intrinsic_working_comes_before_the_answers() -> None:
     """C5-1.7: |v_P|, t = v_P/|v_P|, a_P^t · t and |a_P^n| are derived in the curvature section
     (ω, ω̇ and r the notes' symbols), and the answer row gives a_P^t and a_P^n alone."""
     want = {"en": "(2·r·ω̇, 0); a_P^n = (0, −4·r·ω²/3) |", "es": "(2·r·ω̇; 0); a_P^n = (0; −4·r·ω²/3) |",
-            "ca": "(2·r·ω̇; 0); a_P^n = (0; −4·r·ω²/3) |", "eu": "(2·r·ω̇; 0); a_P^n = (0; −4·r·ω²/3) |"}
+            "ca": "(2·r·ω̇; 0); a_P^n = (0; −4·r·ω²/3) |", "eu": "(2·r·ω̇; 0); a_P^N = (0; −4·r·ω²/3) |"}
     for lang in LANGS:
+        n, t = ("N", "T") if lang == "eu" else ("n", "t")       # the Basque slides' a^N (27th round (g))
         parts = _parts("seed_c5_1_7_semicylinder", lang)
         working = parts["sec.curvature"]
-        for said in ("|v_P| = 2·r·ω", "t = v_P/|v_P| = (1", "a_P · t = 2·r·ω̇", "|a_P^n| = 4·r·ω²/3"):
+        for said in ("|v_P| = 2·r·ω", "t = v_P/|v_P| = (1", "a_P · t = 2·r·ω̇", f"|a_P^{n}| = 4·r·ω²/3"):
             assert said in working, (lang, said)
-        row = next(ln for ln in parts["sec.answers"].splitlines() if "a_P^t" in ln)
+        row = next(ln for ln in parts["sec.answers"].splitlines() if f"a_P^{t}" in ln)
         assert row.endswith(want[lang]) and row.count(" = ") == 2, (lang, row)
 
 
@@ -90,12 +91,12 @@ def test_d_the_wheels_are_steps_of_their_own() -> None:
     """C5-E.6 and C5-1.2, the readers' words: "3. The *front wheel*, from the *ground* and
     the *frame*." in the order, a step for it in the velocities and the accelerations (Step 3
     since round 27b: the step the solution finds it in, with the vector equations the rear
-    wheel's step writes), v_F and a_F written in the frame's step; v_Q = v_{I_OQ} + v_{Q,I_OQ}
+    wheel's step writes), v_F and a_F written in the frame's step; v_Q = v_{I_{OQ}} + v_{QI_{OQ}}
     in Step 1 of C5-1.2, the right wheel's ω read off v_Q = v_{K2∈wheel} + v_QK2 right after."""
     parts = _parts("seed_c5_e6_bicycle", "en")
     assert "3. The *front wheel*, from the *ground* and the *frame*." in parts["sec.structure"]
-    for level, line in (("sec.velocities", "along x: v_FJ = −ω_{front wheel}·JF ⇒ ω_{front wheel} = −v/R_wheel"),
-                        ("sec.accelerations", "along x: a_F = −α_{front wheel}·JF ⇒ α_{front wheel} = −v̇/R_wheel")):
+    for level, line in (("sec.velocities", "along x: v_FJ = −ω_wheel2·JF ⇒ ω_wheel2 = −v/R_wheel"),
+                        ("sec.accelerations", "along x: a_F = −α_wheel2·JF ⇒ α_wheel2 = −v̇/R_wheel")):
         step = parts[level].split("### Step 3: the *front wheel*\n")[1].split("### Step 4")[0]
         assert line in step, level
         assert ("v_F = v_H" if level == "sec.velocities" else "a_F = a_H") in parts[level].split("### Step 2")[0]
@@ -103,5 +104,5 @@ def test_d_the_wheels_are_steps_of_their_own() -> None:
     assert re.search(r"^3\. La \*rueda delantera\*, a partir del \*suelo\* y del \*cuadro\*\.$", es, flags=re.M), es
     bar = _parts("seed_c5_1_2_bar_on_inclined_wheels", "en")["sec.velocities"]
     step1 = bar.split("### Step 2")[0]
-    assert "v_Q  =  v_{I_OQ}  +   v_{Q,I_OQ}" in step1
-    assert step1.index("v_Q  =  v_{I_OQ}") < step1.index("ω_{right wheel} = −|v_QK2| / K2Q = −2.91 rad/s")
+    assert "v_Q  =  v_{I_{OQ}}  +  v_{QI_{OQ}}" in step1
+    assert step1.index("v_Q  =  v_{I_{OQ}}") < step1.index("ω_wheel2 = −|v_QK2| / K2Q = −2.91 rad/s")

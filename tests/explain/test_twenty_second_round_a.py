@@ -93,7 +93,7 @@ def test_centre_placed_in_the_step_that_starts_from_it(name: str, lang: str) -> 
 def test_the_pointer_is_checked_on_the_epicyclic() -> None:
     """The check reads a real pointer: C5-1.4's planet centre, Step 3, from A1 and Q."""
     page = rendered("seed_c5_1_4_epicyclic", "en", "md", drawings=False)
-    assert "I_planet1: placed in Step 3, from the velocities of A1 and Q." in page
+    assert "I_{planet1}: placed in Step 3, from the velocities of A1 and Q." in page
 
 
 @over(name=NOTES_SEEDS)

@@ -107,9 +107,15 @@ def _body(ctx: Context, body: BodyView) -> None:
 
 def _tag(ctx: Context, body: Any) -> str:
     """` (3)` after a body's name when the figure is numbered, unless the name already reads
-    its tag (`names.shows_tag`: no `roda 1 (1)`)."""
+    its tag (`names.shows_tag`: no `roda 1 (1)`), or the tag is a subscript read off the
+    name (`BodyView.read_off`): a figure names a body as the text does, by its name, and
+    the text defines a shortened subscript where it writes one ("ω_zentrala *gurpil zentral
+    finkoaren* abiadura angeluarra da"). "gurpil zentral finkoa (zentrala)" on C5-E.2's
+    figure was heavy, and C5-1.7's "(euskarria)" is written nowhere else on its page (issue
+    30, twenty-seventh round (c)). A number, or an index the model's notation gives, is
+    said: the text's symbols name the body by it alone (ω_3, I_13)."""
     tag = str(body.index or body.number)
-    if not ctx.scene.numbered or not shows_tag(tag, noun(body.label or body.name)):
+    if not ctx.scene.numbered or body.read_off or not shows_tag(tag, noun(body.label or body.name)):
         return ""
     return f" ({tag})"
 

@@ -67,6 +67,8 @@ RIM = 400.0              # a vector's value whose box another body's outline (a 
 NOT_OWN = 600.0          # a polygon term's label nearer another arrow than its own (`Layout._not_own`): as over a label
 OWN_MARGIN = 4.0         # points by which a polygon term's label lies nearer its own arrow than any other
 END_CLEAR = 8.0          # points of each end of an arrow (at most a quarter of it) that a label is not read beside
+OTHER_DOT = 140.0        # a centre's label nearer another labelled point than its own ring (`Layout._other_dot`):
+                         # less than across a body's line (`LINE_OVER`), which reads worse still
 
 
 @dataclass
@@ -256,7 +258,8 @@ class Layout:
         cands = [self._candidates(self.labels[i], anchors[i], sizes[i]) for i in range(n)]
         base = [self._fixed_cost(self.labels[i], *cands[i][:3]) + cands[i][4] +
                 self._leader_over(self.labels[i], cands[i]) + self._apart(i, anchors, cands[i]) +
-                self._areas(self.labels[i], cands[i][0]) + self._lines_under(self.labels[i], cands[i][0])
+                self._areas(self.labels[i], cands[i][0]) + self._lines_under(self.labels[i], cands[i][0]) +
+                self._other_dot(self.labels[i], anchors[i], cands[i][0])
                 for i in range(n)]
         choice = [-1] * n
         for i in range(n):                                 # greedy, most important first
@@ -394,6 +397,23 @@ class Layout:
                 continue
             cost += TOWARDS * np.clip(cand[2] @ (d / np.linalg.norm(d)), 0, None)
         return cost
+
+    def _other_dot(self, label: Label, anchor: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+        """What an instant centre's label costs for lying nearer another labelled point than its
+        own ring (box centre to dot): `OTHER_DOT`, for the label is read as that point's. C5-E.2's
+        I_planet1, once the planet's subscript was short (issue 30, twenty-seventh round (g)),
+        went up beside A1, 35 points above its ring at the contact J, clear of every line: a
+        reader took it for A1's. Other labels sit by their point or arrow (`_apart`, the
+        polygons' own rules)."""
+        if not label.gid.startswith("centre:") or not len(self.dots):
+            return np.zeros(len(boxes))
+        others = self.dots[np.linalg.norm(self.dots - anchor, axis=1) > DOT_NEAR * self.px]
+        if not len(others):
+            return np.zeros(len(boxes))
+        centres = (boxes[:, :2] + boxes[:, 2:]) / 2
+        own = np.linalg.norm(centres - anchor, axis=1)
+        nearest = np.linalg.norm(centres[:, None, :] - others[None, :, :], axis=2).min(axis=1)
+        return OTHER_DOT * (nearest < own)
 
     def _areas(self, label: Label, boxes: np.ndarray) -> np.ndarray:
         """What a body's name or a vector's value costs for lying on another body's area

@@ -19,8 +19,16 @@ The rule, for each body of a model that names its bodies in the language:
 3. else that word with the name's number or its code (politja 1 -> politja1, "1. polea" ->
    polea1, "roda de radi R" -> rodaR as the notes' Ω^{rodaR}, where the code R alone is a
    parameter's name: `named_labels`' `parameters`);
-4. else the name's words as written, as the notes' "roda sup": ω_{roda esquerra},
-   ω_{politja mòbil}, ω_{left wheel}, ω_{ezkerreko gurpila}.
+4. else (a name of several words whose word clashes with another body's, and that holds no
+   number or code of its own) that word with the body's rank among the bodies named by the
+   same word, in the notes' numbering: *left wheel* and *right wheel* are ω_wheel1 and
+   ω_wheel2, *ezkerreko gurpila* and *eskuineko gurpila* ω_gurpila1 and ω_gurpila2, *la
+   politja fixa* and *la politja mòbil* ω_politja1 and ω_politja2 (a rank another body's
+   subscript holds is skipped). A teacher writes a short index on the board and declares it
+   once (the page's notation line under the structure: `render.base.Renderer.subscripts`),
+   never "v_{J∈ezkerreko kable-zatia}" or "ω_{ezkerreko gurpila rel txasisa}", a subscript of
+   words with spaces (issue 30, twenty-seventh round (g), a Basque teacher); ω_gurpila1 is
+   the style of the pages whose names hold a number (*1. gurpila*).
 
 A body the language does not name is written by the model's own name when that is a plain
 word (ground, carrier), else by its number; so is any body whose subscript would still be
@@ -114,8 +122,6 @@ def _candidates(name: str, lang: str) -> tuple[list[str], list[str]]:
         out.append(head + number)
     elif len(codes) == 1:              # roda de radi R -> rodaR, the notes' Ω^{rodaR}
         out.append(head + codes[0])
-    if len(content) > 1:
-        out.append(" ".join(content) + number)
     return codes, out
 
 
@@ -131,6 +137,32 @@ def _modifier(name: str, lang: str) -> str:
         return ""
     rest = [w for w in content if w.lower() not in wheel]
     return _head(rest, lang) if rest else ""
+
+
+def _ranked(free: list[str], found: dict, out: dict[str, str], taken: set,
+            spelt: dict[str, str]) -> dict[str, str]:
+    """Rule 4: each body of `free` (in the notes' numbering) left without a subscript whose
+    name has a word (`found[b][1][0]`, the word rule 2 took and another body's name shares)
+    gets that word with its rank among such bodies of the same word: wheel1, wheel2. A
+    subscript already given (`out`), reserved (`taken`) or that another body's rule 3 reads
+    off its own name (gurpila1 for *1. gurpila*) is skipped: the next rank is taken. Two
+    bodies called alike (*la roda* twice) keep their numbers: no name tells them apart, so
+    no legend could say which is roda1."""
+    used = set(taken) | set(out.values())
+    held = {w for b in free for w in found[b][1][1:]}
+    rank: dict[str, int] = {}
+    ranked: dict[str, str] = {}
+    for b in free:
+        if b in out or not found[b][1] or any(o != b and spelt[o] == spelt[b] for o in free):
+            continue
+        head = found[b][1][0]
+        k = rank.get(head, 1)
+        while f"{head}{k}" in used or (f"{head}{k}" in held and f"{head}{k}" not in found[b][1]):
+            k += 1
+        ranked[b] = f"{head}{k}"
+        used.add(ranked[b])
+        rank[head] = k + 1
+    return ranked
 
 
 def named_labels(order: list[str], names: dict[str, str], lang: Optional[str],
@@ -171,6 +203,7 @@ def named_labels(order: list[str], names: dict[str, str], lang: Optional[str],
         else:
             if not spelt[b] and PLAIN_ID.match(b):
                 out[b] = b
+    out.update(_ranked(free, found, out, taken, spelt))
     labels = {**{b: given[b] for b in given if b in numbers}, **out}
     written: dict[str, list[str]] = {}
     for b, t in labels.items():

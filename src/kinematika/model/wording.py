@@ -56,6 +56,20 @@ PART_SUBSCRIPTS = {"sub.rel": {"en": "rel", "es": "rel", "ca": "REL", "eu": "rel
                    "sub.cor": {"en": "Cor", "es": "Cor", "ca": "Cor", "eu": "cor"}}
 # the Basque slides (4.2) write the composition a_B = a_arr + a_rel + a_cor: their word, lower case
 
+# the superscripts of an acceleration's normal and tangential components (a_BA^n, a_BA^t), as
+# each course writes them: the Basque slides (seed 001, 4.2) write a_BA^N and a_BA^T, and keep
+# D for a known direction so that N is free for the normal ("Norabidea adierazteko D erabiliko
+# da, N hizkia normala adierazi behar denean erabili ahal izateko"); the Catalan notes write
+# a_T^n (seed 002), as English and Spanish texts do. One place for the equations, the lists of
+# terms and the polygons' labels (`Renderer.noted`; issue 30, twenty-seventh round (g))
+COMPONENT_SUPERSCRIPTS = {"n": {"eu": "N"}, "t": {"eu": "T"}}
+
+
+def component_superscript(sup: str, lang: Optional[str]) -> str:
+    """A symbol's superscript as `lang` writes it: a normal or tangential component's (n, t)
+    in the course's letter (Basque N, T), any other (geom, a model's own) as it is."""
+    return COMPONENT_SUPERSCRIPTS.get(sup, {}).get(lang or "en", sup)
+
 
 # a screw axis as a figure labels it, in each course's words (the Catalan notes' EIRL, eix
 # instantani de rotació i lliscament; the Spanish EIR; the Basque ardatz instantaneoa)

@@ -356,8 +356,8 @@ v-intro = Cada equació vectorial s’anota com als apunts: M: mòdul conegut; D
         [2] {" "}Aquí M i D són aquestes marques; no són els punts M i D.
        *[other] {""}
     } Una equació vectorial plana resol dues incògnites{ $format ->
-        [md] : els termes marcats amb ?, que troba el pas
-       *[other] ; en vermell, els termes trobats en el pas
+        [md] : el pas troba els termes marcats amb ?
+       *[other] : el pas troba els termes marcats en vermell
     }.
 a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
 a-intro_relative = Conegudes les velocitats, tots els termes normals són coneguts; les incògnites són els termes tangencials i relatius.

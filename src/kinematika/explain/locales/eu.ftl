@@ -15,7 +15,7 @@ data-relative = Magnitude erlatibo baten notazioak bi solidoak adierazten ditu: 
        *[no] .
     }
 data-spatial = Abiadura eta azelerazio angeluarrak bektoreak dira (eskuineko eskuaren araua beren norabidearen inguruan).
-data-symbolic = Datuak ikurrak dira, eta emaitza bakoitza haien formula zehatza da. Irudiak ikurren lagin-balioekin marraztuta daude; irudi bakoitzaren azpian ematen dira balio horiek.
+data-symbolic = Datuak ikurrak dira eta emaitzak formula gisa ematen dira; irudiak ikurren balio jakin batzuekin marraztu dira, irudi bakoitzaren azpian emanak.
 data-symbol = ikur bat (edozein balio)
 data-constructed = eraikuntzaz kokatua (ikus Posizioa)
 data-circles = zentroa { $centre }, erradioak { $radii }
@@ -283,9 +283,9 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M: modulua ez
         }
         [2] {" "}Hemen M eta D letrak marka hauek dira; ez dira M eta D puntuak.
        *[other] {""}
-    } Ekuazio bektorial lau batek bi ezezagun ebazten ditu{ $format ->
-        [md] : ? ikurraz markatutako terminoak, urratsak aurkitzen dituenak
-       *[other] ; gorriz, urratsean aurkitutako terminoak
+    } Planoko ekuazio bektorial batek bi ezezagun ebazten ditu{ $format ->
+        [md] : urrats bakoitzean ? ikurraz markatutako terminoak
+       *[other] : urrats bakoitzean gorriz idatzitako terminoak
     }.
 a-intro = Abiadurak ezagunak direnez, termino normal guztiak eta Coriolisen termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
@@ -350,8 +350,8 @@ sec-rates_summary = Abiadura eta azelerazio angeluarrak
 sec-rates_summary_v = Abiadura angeluarrak
 sec-centres = Biraketa-zentro instantaneoak
 centres-intro = I ikurrak, bi solidoren zenbakiekin ({ $example }: 1 eta 3 solidoak), haien mugimendu erlatiboaren biraketa-zentro instantaneoa adierazten du: abiadura erlatiboa nulua den puntua.
-centres-intro_named = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko: abiadura erlatiboa nulua den puntua.
-centres-intro_named_rel = I ikurrak, solido baten izenarekin ({ $pair }), { $body } solidoaren biraketa-zentro instantaneoa adierazten du { $frame } solidoarekiko, eta «rel» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko: abiadura erlatiboa nulua den puntua.
+centres-intro_named = I ikurrak, solido baten izena azpiindize duela, solido horren biraketa-zentro instantaneoa (BZI) adierazten du { $frame } solidoarekiko, hau da, { $frame } solidoarekiko abiadura nulua duen puntua (adibidez, { $pair } { $body } solidoarena da).
+centres-intro_named_rel = I ikurrak, solido baten izena azpiindize duela, solido horren biraketa-zentro instantaneoa (BZI) adierazten du { $frame } solidoarekiko, hau da, { $frame } solidoarekiko abiadura nulua duen puntua (adibidez, { $pair } { $body } solidoarena da); «rel» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
 centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),

@@ -13,7 +13,7 @@ from ...numerals import DECIMAL, decimal_sign, separator, written
 from ...text import shown_lines
 
 from ...draw.names import centre_subscript
-from ...model.wording import ARTICLES, NO_ARTICLE, Wording, part_subscript, rate_key
+from ...model.wording import ARTICLES, NO_ARTICLE, Wording, component_superscript, part_subscript, rate_key
 from ..catalogue import CONTRACTIONS, Catalogue
 from ..document import (CENTRE_POINT_RE, GEOM_MARK, Ann, centre_point, CentreNote, Derived, Document, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Own,
                         Described, Section, Sym, Table, Told, Value)
@@ -23,6 +23,7 @@ from .svg import Text, plain_text, sym_text
 
 TOKEN = "\ue000{}\ue001"
 LEGEND = "\ue002legend\ue003"        # where the legend of shortened subscripts goes (`render`)
+EARLY_LEGEND = "\ue002early\ue003"   # … or, when a block before it writes one, before that block
 CENTRES_INTRO = "\ue002centres\ue003"   # where the centres' first sentence goes (`render`)
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
 # a symbol typed in a model's own words: one letter (with its marks: φ̇) that ends no word, an
@@ -157,12 +158,15 @@ class Renderer(ABC):
         self._rel_told = False               # the data's sentence on relative quantities said "rel"
         self._rel_centres: list[Sym] = []    # instant centres written with "rel", I_{a rel b}
         self._centres_intro: Optional[tuple[str, str]] = None
+        self._early = False                  # the legend stands before the first block that needs it
         body = [self.heading(1, self.esc(shown_lines(self.wording.title(self.lang, self.doc.title))))]
         with formula_values(self.doc.values):
             body += [self.section(s) for s in self.doc.sections]
         page = "\n".join(body)
         if self._legend is not None:
             said = self.subscripts(self._legend)
+            if self._early:                  # said where a shortened subscript is first written
+                page = page.replace(LEGEND + "\n", "", 1).replace(EARLY_LEGEND + "\n", said + "\n" if said else "", 1)
             page = page.replace(LEGEND if said else LEGEND + "\n", said, 1)
         if self._centres_intro is not None:      # a message may write a centre it then does not show
             centres, self._rel_centres = self._rel_centres, []
@@ -173,8 +177,29 @@ class Renderer(ABC):
     def section(self, sec: Section) -> str:
         """A section: its heading at its level, then its blocks in order."""
         parts = [self.heading(sec.level, self.message(sec.title))]
-        parts += [self.block(b) for b in sec.blocks]
+        parts += [self.declared(b) for b in sec.blocks]
         return "\n".join(p for p in parts if p)
+
+    def declared(self, b: Any) -> str:
+        """Block `b` as `block` writes it; before the legend of shortened subscripts has its
+        place (the structure's notation line), a block that writes one of them first (the
+        Data's "Given: ω_wheel1 = −ω" on C5-E.3, a statement's "r ω_pinoia = R ω_platera"
+        on C5-E.6, 2.1's v_{F∈furka}) is preceded by the legend's mark: the legend is said
+        there, once, before the symbol is read, where the Data has just introduced the
+        body (issue 30, twenty-seventh round (g); `render`)."""
+        if self._legend is not None or self._early or not hasattr(self, "_written") or isinstance(b, Section):
+            return self.block(b)
+        rated, members, member = set(self._rated), set(self._members), self._member
+        text = self.block(b)
+        if self._legend is not None:
+            return text
+        spelt = self.wording.bodies.get(self.lang or "", {})
+        new = (self._rated - rated) | (set(self._members) - members)
+        if (member is None and self._member is not None and spelt) or any(
+                not self._plain(x, self.labels().get(x, ""), spelt) for x in new if spelt):
+            self._early = True
+            return EARLY_LEGEND + "\n" + text
+        return text
 
     def block(self, b: Any) -> str:
         """One block in the format's markup: a message as a paragraph, an equation (with its
@@ -438,6 +463,8 @@ class Renderer(ABC):
         if TYPED_GEOM in text:      # J^{geom} in a note as the body writes the point (`geom_mark`)
             return self.geom_mark().join(self.typed(part) for part in text.split(TYPED_GEOM))
         parts = SUBSCRIPTED.split(text)
+        for k in range(1, len(parts), 3):
+            self.typed_label(parts[k], parts[k + 1])
         return "".join(self.subscripted(parts[k], parts[k + 1]) if k % 3 == 1
                        else self.bodies_marked(part, self.esc) if k % 3 == 0 else "" for k, part in enumerate(parts))
 
@@ -446,6 +473,20 @@ class Renderer(ABC):
         how a plain-text page (Markdown) writes a subscript itself (v_B, ω_{3/2}); a format with
         markup overrides it."""
         return self.esc(f"{base}_{sub}")
+
+    def typed_label(self, base: str, sub: str) -> None:
+        """Note a body's own symbol typed in a model's words (C5-E.6's "r ω_pinoia = R
+        ω_platera") as written, as `label` notes one the page writes: the legend of shortened
+        subscripts then says which body ω_platera is, before the words use it."""
+        if base not in ("ω", "α", "I") or not hasattr(self, "_written"):
+            return
+        found = [b for b, label in self.labels().items() if label == sub.strip("{}")]
+        if len(found) == 1:
+            self._rating = True
+            try:
+                self.label(found[0])
+            finally:
+                self._rating = False
 
     def plain(self, x: Any) -> str:
         """The text a name argument is read as, in the reader's language (for elision)."""
@@ -595,7 +636,13 @@ class Renderer(ABC):
 
     def noted(self, s: Sym) -> Sym:
         """A rate symbol as the model's notation writes it (the fan's ω₁ for the block's ω,
-        ω₂ for the blades' relative to the block), else as it is."""
+        ω₂ for the blades' relative to the block), else as it is; a normal or tangential
+        component's superscript as the language's course writes it (Basque a_BA^N, a_BA^T:
+        `model.wording.component_superscript`). Every format's symbols and the polygons'
+        labels pass here."""
+        sup = component_superscript(s.sup, self.lang) if s.sup else s.sup
+        if sup != s.sup:
+            s = Sym(s.base, s.sub, sup, s.vector, s.sub_key, s.fixed, s.of_body)
         if s.fixed or s.base not in ("ω", "α") or not s.sub or s.sub_key:
             return s
         parts = s.sub.split("/")

@@ -17,7 +17,7 @@ TEXT = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#
         "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}"}
 MATH = {"ω": r"\omega", "α": r"\alpha", "ρ": r"\rho", "ℜ": r"\Re", "⊥": r"\perp", "∥": r"\parallel", "∈": r"\in",
         "×": r"\times", "·": r"\cdot", "−": "-", "²": "^2", "³": "^3", "–": "\\text{--}", "→": r"\to",
-        "—": "\\text{---}", "ⁿ": "^n", "⇒": r"\Rightarrow", "≡": r"\equiv"}
+        "—": "\\text{---}", "ⁿ": "^n", "ᴺ": "^N", "⇒": r"\Rightarrow", "≡": r"\equiv"}
 
 # the Greek letters, as LaTeX's commands (β as \\beta, Φ as \\Phi): pdflatex's utf8 input knows
 # none, so one typed in a model's words would stop the compilation; the capitals LaTeX has no

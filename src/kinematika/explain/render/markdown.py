@@ -34,10 +34,6 @@ BAR = re.compile(r"(?<!\\)\|")
 DEFINITION = re.compile(r"^\[(fig-\d+)\]: data:image/svg\+xml;base64,([A-Za-z0-9+/=]+)$", re.M)
 
 
-# a segment ending at a centre inside a symbol's subscript, CI_{pulley} in v_{CI_{pulley}}: written
-# v_{C,I_pulley} (the notes' v_C,I), a point and the centre apart, so that no subscript stands
-# inside a subscript (issue 30, sixteenth round); a bare segment keeps CI_{pulley} (thirteenth)
-SEGMENT_TO_CENTRE = re.compile(r"(?<=[A-Za-z0-9′'])I_\{([^{}\s]+)\}$")
 COMPOUND = "/,-∈ ^"        # a subscript with these holds more than one name (or words: roda sup; J^{geom})
 
 
@@ -75,11 +71,13 @@ class MarkdownRenderer(Renderer):
     def symbol(self, s: Sym) -> str:
         """A symbol in plain text: v_B, a_B^n; a subscript of more than one name in braces,
         so that it cannot be read as a division or a difference: ω_{3/2}, v_{A∈3/2},
-        v_{rel,A}, v_{O2-A}; a velocity to a centre v_{C,I_pulley} (`SEGMENT_TO_CENTRE`)."""
+        v_{rel,A}, v_{O2-A}. An instant centre is written one way on a page, its subscript
+        always in braces (`centre_braced`): I_{polea}, I_{OQ}, and so in a segment (CI_{polea},
+        I_{OQ}O) and inside another symbol's subscript (v_{I_{polea}}, v_{CI_{polea}}, as v_CJ
+        is the segment CJ)."""
         raw = self.sub_text(s, centres=False)
         sub = self.centred(raw, lambda t: self.esc(t).replace("\\_", "_"), self.symbol)
-        sub = SEGMENT_TO_CENTRE.sub(r",I_\1", sub)                              # v_{C,I_pulley}
-        if any(c in sub for c in COMPOUND) or CENTRE_POINT_RE.search(raw):      # v_{I_OQ}
+        if centre_braced(s, sub) or any(c in sub for c in COMPOUND) or CENTRE_POINT_RE.search(raw):
             sub = "{" + sub + "}"
         return s.base + (f"_{sub}" if sub else "") + (f"^{s.sup}" if s.sup else "")
 
@@ -187,6 +185,16 @@ class MarkdownRenderer(Renderer):
     def drawing(self, d: Drawing) -> str:
         """A `draw` figure as an SVG image by reference, with its caption in italics below."""
         return self.image(self.drawing_caption(d), d.svg(self.cat.lang))
+
+
+def centre_braced(s: Sym, sub: str) -> bool:
+    """Whether `s` is an instant centre, whose subscript Markdown always sets in braces
+    (issue 30, twenty-seventh round (g): a Basque teacher read "I_polea", "I_{polea}" and
+    "v_{C,I_polea}" for one centre on C5-1.1's page, I_OQ beside I_{OQ} on C5-1.2's). A segment
+    that starts at a centre must close its subscript (I_{OQ}O, the thirteenth round), so the
+    closed form is the one every place can write: standalone, in a segment and inside another
+    symbol's subscript alike."""
+    return s.base == "I" and bool(sub)
 
 
 UNESCAPED_STAR = re.compile(r"(?<!\\)\*")
