@@ -78,14 +78,17 @@ def _bodies(inst: Instant, num: Numbers, lang: Optional[str] = None) -> dict[str
     out = {}
     # the figures' tags: the bodies' names' subscripts where the text writes ω_biela, I_biela,
     # else their numbers (3)
-    labels = body_labels(model, lang, named=names_bodies(model, lang))
+    named = names_bodies(model, lang)
+    labels = body_labels(model, lang, named=named)
     for name, number in body_numbers(model).items():
         body = model.bodies[name]
         frame = name == model.frame
         points = {p: num.page(inst.points[p]) for p in body.points}
         shapes = [view for s in inst.shapes.get(name, []) for view in _shapes(s, num)]
+        read_off = named and model.wording.index(name, lang) is None and labels[name] != str(number)
         out[name] = BodyView(name, number, "#424242" if frame else body_colour(number), frame,
-                             points, shapes, label=model.wording.body(name, lang), index=labels[name])
+                             points, shapes, label=model.wording.body(name, lang), index=labels[name],
+                             read_off=read_off)
     for name in welded_to_frame(model):
         out[name].fixed = True
     for j in model.joints:

@@ -83,6 +83,8 @@ class BodyView:
     label: str = ""                        # its name as the figure writes it (the model's
                                            # name in the figure's language, else its own)
     index: str = ""                        # how labels write it: its number, or the model's index
+    read_off: bool = False                 # `index` is read off its name (ω_zentrala of *gurpil zentral
+                                           # finkoa*): no number, no index the notation gives it
     fixed: bool = False                    # welded to the frame (an inclined plane): drawn as ground
 
 
