@@ -165,9 +165,9 @@ NOTES_SEEDS = [s for s in SEEDS if s.startswith(("seed_001_", "seed_c5_"))]
 # every language; Markdown with its drawings), and what was recorded, by (seed, language):
 # {"labels": [(placed, tips, px) of each label layout, display units], "polygons": [(layout,
 # items, placed) of each polygon], "drawings": [(placed, `Layout`) of each label layout of a
-# mechanism drawing, with the lines drawn under it as the layout's `recorded_lines`], …:
-# `_recording`}. The layout rules read English and Catalan, whose words are the longest
-# (`RECORDED_LANGS`); the drawn lines are read in all four.
+# mechanism drawing, the lines drawn under it its `recorded_lines`, the marks painted its
+# `recorded_marks`], …: `_recording`}. The layout rules read English and Catalan, whose words
+# are the longest (`RECORDED_LANGS`); the drawn lines are read in all four.
 RECORDED_LANGS = ("en", "ca")
 RECORDED = frozenset((name, lang, "md", True) for name in NOTES_SEEDS for lang in LANGS)
 _LAYOUTS: dict[tuple[str, str], dict[str, list]] = {}
@@ -182,7 +182,9 @@ def _recording():
     the dict it yields as they are made; each call returns what it returned (the page is
     written as without the recording). A layout of a mechanism drawing (inside
     `kinematika.draw.svg`, as `Drawing.svg` calls it) is also recorded as a drawing's, with
-    the lines drawn under its labels (`_lines_drawn`) as its `recorded_lines`."""
+    the lines drawn under its labels (`_lines_drawn`) as its `recorded_lines`, and every mark
+    painted on its figure (`draw.paint.paint_mark`'s, data coordinates) as its `recorded_marks`
+    (one list a figure, shared by the layouts tried while its limits grew)."""
     from kinematika import draw as draw_package
     from kinematika.draw import labels, paint
     from kinematika.explain.render import svg as svg_module
@@ -203,6 +205,7 @@ def _recording():
         init(self, board, ax)
         if drawing[0]:
             self.recorded_lines = _lines_drawn(board, ax)
+            self.recorded_marks = board.__dict__.setdefault("painted", [])
 
     def recorded_run(self):
         out = run(self)
@@ -221,6 +224,7 @@ def _recording():
     def recorded_paint_mark(cv, m):
         if m.kind == "line" and (m.group or "").startswith(("kennedy:", "normal:")):
             cv.board.__dict__.setdefault("construction", []).append(np.asarray(m.points, dtype=float))
+        cv.board.__dict__.setdefault("painted", []).append(m)
         return paint_mark(cv, m)
 
     labels.Layout.__init__, labels.Layout.run, svg_module._place = recorded_init, recorded_run, recorded_place

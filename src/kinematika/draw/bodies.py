@@ -57,7 +57,7 @@ def _skeleton(ctx: Context, body: BodyView, colour: str, width: float = BAR_WIDT
     for line in body.skeleton:
         ctx.add("line", line, width=width, colour=colour, alpha=0.9, cap="round", join="round",
                 zorder=2, gid=f"body:{body.name}", moves_with=None if body.frame else body.name)
-        ctx.avoid(*line)
+        ctx.avoid(*line, bar=True)
 
 
 def _body(ctx: Context, body: BodyView) -> None:
@@ -68,10 +68,12 @@ def _body(ctx: Context, body: BodyView) -> None:
         _radii(ctx, body, pts, wheels)       # the disc is the body: mark its points by radii
         pts = []
     side = None                              # a bar's label beside it, away from the mechanism
+    spots = None                             # other points of the body its name may be led from
     if body.skeleton:
         _skeleton(ctx, body, body.colour)
         longest = max(body.skeleton, key=lambda line: float(np.ptp(np.asarray(line), axis=0).sum()))
         anchor, pts = np.asarray(longest)[len(longest) // 2], []
+        spots = bar_spots(longest)
         if len(longest) == 2:
             anchor = (longest[0] + longest[1]) / 2
             side = _beside(ctx, longest[0], longest[1])
@@ -88,21 +90,24 @@ def _body(ctx: Context, body: BodyView) -> None:
     if len(pts) == 2:
         ctx.add("line", pts, width=BAR_WIDTH, colour=body.colour, alpha=0.9, cap="round",
                 zorder=2, gid=f"body:{body.name}", moves_with=body.name)
-        ctx.avoid(*pts)
+        ctx.avoid(*pts, bar=True)
         anchor = (pts[0] + pts[1]) / 2
         side = _beside(ctx, pts[0], pts[1])
+        spots = bar_spots(pts)
     prefer = None
     for shape in body.shapes:
         _moving_shape(ctx, body, shape)
         if anchor is None and shape.kind == "circle":
             anchor = shape_anchor(shape, ring_band(ctx, shape))
+            spots = shape_spots(shape, ring_band(ctx, shape))
             prefer = UP_LEFT if shape.ring else None
     if anchor is None and pts:
         anchor = pts[0]
     if anchor is not None:
         name = plain(noun(body.label or body.name)) + _tag(ctx, body)
         ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", body=body.name, side=side, prefer=prefer,
-                  group=f"body:{body.name}", style="italic", radius=BAR_WIDTH / 2 if side is not None else 0.0)
+                  group=f"body:{body.name}", style="italic", radius=BAR_WIDTH / 2 if side is not None else 0.0,
+                  spots=spots)
 
 
 def _tag(ctx: Context, body: Any) -> str:
@@ -320,6 +325,33 @@ def shape_anchor(s: ShapeView, band: float = 0.0) -> np.ndarray:
     return s.centre() + (s.radius + band if s.ring else 0.6 * s.radius) * UP_LEFT
 
 
+BAR_SPOTS = (0.2, 0.35, 0.65, 0.8)     # where along its bar a bar's name may also be led from
+
+
+def bar_spots(line: Any) -> np.ndarray:
+    """The other points a bar's name may be led from (`draw.labels`' `Label.spots`): at the
+    fractions `BAR_SPOTS` of the polyline's length, so that a bar lying inside another
+    body's disc is named beside its stretch nearest the disc's edge (C5-E.1's arm OC from
+    O, at the wheels' rim, not from its middle, inside them; issue 30, twenty-seventh round
+    (c))."""
+    line = np.asarray(line, dtype=float)
+    steps = np.linalg.norm(np.diff(line, axis=0), axis=1)
+    at = np.concatenate([[0.0], np.cumsum(steps)])
+    return np.column_stack([np.interp(np.array(BAR_SPOTS) * at[-1], at, line[:, k]) for k in (0, 1)])
+
+
+def shape_spots(s: ShapeView, band: float = 0.0, inside: bool = True) -> Optional[np.ndarray]:
+    """The other points a circle-shaped body's name may be led from (`draw.labels`'
+    `Label.spots`): as `shape_anchor`'s, in the eight directions round the circle, so that
+    what is drawn on one side of a wheel (an arrow, a bar, a belt) does not hem its name in.
+    None for a part of a disc (its name goes towards its arc)."""
+    if s.arc is not None:
+        return None
+    t = np.arange(8) * np.pi / 4
+    reach = s.radius + band if s.ring or not inside else 0.6 * s.radius
+    return s.centre() + reach * np.column_stack([np.cos(t), np.sin(t)])
+
+
 def _fixed_body(ctx: Context, body: BodyView) -> None:
     """A body welded to the frame is ground (C5-1.2's inclined planes): its lines are drawn
     as the pieces of ground they are — hatched segments over the points they hold and the
@@ -389,7 +421,7 @@ def _fixed_circle_name(ctx: Context, body: BodyView) -> None:
     anchor = s.centre() + (0.6 * s.radius if inside else s.radius + band) * towards
     name = plain(noun(body.label or body.name)) + _tag(ctx, body)
     ctx.label(anchor, name, GROUND, 5, f"body:{body.name}", group=f"body:{body.name}", style="italic",
-              prefer=None if inside else UP_LEFT)
+              prefer=None if inside else UP_LEFT, spots=shape_spots(s, band, inside))
 
 
 def _ground_shape(ctx: Context, s: ShapeView) -> None:

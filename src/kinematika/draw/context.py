@@ -76,14 +76,16 @@ class Context:
         self.marks.append(mark)
         return mark
 
-    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0) -> None:
+    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, bar: bool = False) -> None:
         """Keep labels off the polyline through these points (a single point too); `weight`
         says how bad covering it is (arrows and marks more than bars), `radius` (points) how
         far around each point the drawing reaches; drawn while a body is (`owner`), it is
-        that body's outline, which that body's name may reach across (`draw.labels`)."""
+        that body's outline (`bar`: its bar), which that body's name may reach across and
+        no other label's leader crosses (`draw.labels`)."""
         owner = self.owner
+        role = "bar" if bar else "outline"
         self.add("clear", [np.asarray(p, dtype=float) for p in polyline], avoid=weight,
-                 radius=radius, zorder=0, **({"group": f"outline:{owner}"} if owner else {}))
+                 radius=radius, zorder=0, **({"group": f"{role}:{owner}"} if owner else {}))
 
     def area(self, *polygon: Any) -> None:
         """The region the body being drawn (`owner`) covers, a closed polygon through these

@@ -52,18 +52,21 @@ DOT_NEAR = 4.0           # points: a leader passing this close to another label'
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
 LEADER_OVER = 450.0      # a leader across another label's box, for labels not on an arrow (`Label.along`): worse than a name on another body (`AREA`)
                          # or through another label's dot (a point, a centre: `Layout._dots_passed`)
-ARROW_CROSS = 450.0      # a polygon label's leader across an arrow (exactly, not sampled): worse than a box over an arrow
+ARROW_CROSS = 450.0      # a leader across an arrow (exactly, not sampled): worse than a box over an arrow
 ARROW_UNDER = 400.0      # a polygon label's box over another arrow (exactly): as bad as over a label
-BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, a bar, the ground's line), each time
-AREA = 400.0            # a body's name or a vector's value over another body's area, × the box's part covered
+BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim, the ground's line), each time
+BAR_CROSS = 200.0        # a leader across another body's bar, each time: half a name on that body (`AREA`)
+AREA = 400.0            # a body's name or a vector's value over another body's area or over hatching,
+                        # × the box's part covered; and for each line of another body through its box
 AREA_GRID = (8, 4)      # points across and up a label's box tested for lying in a body's area
-LINE_OVER = 150.0        # a name, value or centre's label across a drawn line of a body (an outline, bar, rim,
-                         # hatching, construction line), each line: worse than a leader across one (`BODY_CROSS`)
+LINE_OVER = 150.0        # a label across a drawn line that is not another body's (its own body's outline,
+                         # hatching, a construction line), each line: worse than a leader across one (`BODY_CROSS`)
 DRAWN = (0.5, 3.0)       # the `avoid` weights of such lines (hatching 0.7, construction 0.5; arrows weigh 3)
 TOWARDS = 60.0           # a close point's label leaning towards the other point (× cosine)
 DISTANCE, PREFER, ALONG = 0.15, 5.0, 0.04      # ALONG: per point an anchor slides off the middle
 SHAFT = 0.5              # per point a mechanism vector's value slides back from its tip along its shaft (`Label.shaft`)
-RIM = 400.0              # a vector's value whose box another body's outline (a rim, a bar) runs through: as on its area
+                         # and a name is led from another spot of its body (`Label.spots`)
+SPOT_CLEAR = 6.0         # points: a name's spot this near another body's bar or an arrow is not used
 NOT_OWN = 600.0          # a polygon term's label nearer another arrow than its own (`Layout._not_own`): as over a label
 OWN_MARGIN = 4.0         # points by which a polygon term's label lies nearer its own arrow than any other
 END_CLEAR = 8.0          # points of each end of an arrow (at most a quarter of it) that a label is not read beside
@@ -89,6 +92,7 @@ class Label:
     along: Optional[np.ndarray] = None    # an arrow's (start, end), data: the anchor may slide on it
     shaft: Optional[np.ndarray] = None    # a mechanism vector's arrow (start, end), data: likewise (`SHAFT`)
     off_arrows: bool = False              # a polygon's image name: no arrow may run through its box
+    spots: Optional[np.ndarray] = None    # a body's name: other points of its body (data) it may be led from
 
     @property
     def extent(self) -> tuple[float, float]:
@@ -122,7 +126,8 @@ class LabelBoard:
     obstacles: list[tuple] = field(default_factory=list)   # (data polyline, weight, radius)
     tips: list[np.ndarray] = field(default_factory=list)   # arrows' tips (data coordinates)
     owners: list[str] = field(default_factory=list)        # each obstacle's body ("" for none)
-    areas: list[tuple[str, np.ndarray]] = field(default_factory=list)   # (body, polygon, data)
+    bars: list[bool] = field(default_factory=list)         # whether each obstacle is a bar
+    areas: list[tuple[str, np.ndarray]] = field(default_factory=list)   # (body or "" for hatching, polygon, data)
     arrows: list[np.ndarray] = field(default_factory=list)  # a polygon's arrows, (start, end) data
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
@@ -132,19 +137,23 @@ class LabelBoard:
         self.labels.append(Label(np.asarray(anchor, dtype=float), text, colour, priority, gid,
                                  pref, **kw))
 
-    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, owner: str = "") -> None:
+    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, owner: str = "",
+              bar: bool = False) -> None:
         """Keep labels off the drawn polyline through these points (a single point too);
         `weight` says how bad covering it is (arrows and marks more than bars), `radius`
         (points) how far around each point the drawing reaches (a marker's size), `owner`
-        the body it outlines (its name's leader may cross it: `Layout._leader_over`)."""
+        the body it outlines (its name's leader may cross it: `Layout._leader_over`), `bar`
+        whether it is a bar (no leader crosses another body's: `BAR_CROSS`)."""
         self.obstacles.append((np.array([np.asarray(p, dtype=float) for p in polyline]), weight,
                                radius))
         self.owners.append(owner)
+        self.bars.append(bar)
 
     def area(self, owner: str, polygon: Any) -> None:
         """The region body `owner` covers (a closed polygon, data coordinates: a wheel's disc,
         a plate, a ring's band), which another body's name or a vector's value does not sit
-        on (`Layout._areas`)."""
+        on (`Layout._areas`); `owner` "" for a hatched fill (the frame's hatching), which no
+        name or value sits on, its own body's neither: text over hatching is not read."""
         self.areas.append((owner, np.asarray(polygon, dtype=float)))
 
     def tip(self, point: Any) -> None:
@@ -237,6 +246,10 @@ class Layout:
         self.outline_owners = np.array([o for (line, weight, _), o in zip(board.obstacles, owners)
                                         if 1.0 <= weight < 3.0 and len(line) >= 2
                                         for _ in range(len(line) - 1)], dtype=object)
+        bars = board.bars if len(board.bars) == len(board.obstacles) else [False] * len(board.obstacles)
+        self.outline_bars = np.array([b for (line, weight, _), b in zip(board.obstacles, bars)
+                                      if 1.0 <= weight < 3.0 and len(line) >= 2
+                                      for _ in range(len(line) - 1)], dtype=bool)
         self.drawn, self.drawn_line, self.drawn_owner = _drawn_lines(board.obstacles, owners, ax.transData)
         self.areas = [(owner, Path(ax.transData.transform(poly))) for owner, poly in board.areas
                       if len(poly) >= 3]
@@ -310,7 +323,15 @@ class Layout:
         the same way back from its tip, at `SHAFT` a point (dearer than a polygon's `ALONG`:
         beyond the tip is its place), so that where its tip lies on another body it sits
         beside its own shaft, clear of that body, not on the body or across its rim at the end
-        of a long leader (C5-E.6's v_P, ending inside the front wheel; twenty-fourth round (b))."""
+        of a long leader (C5-E.6's v_P, ending inside the front wheel; twenty-fourth round (b)).
+        A body's name with `Label.spots` may be led from any of them too, at `SHAFT` a point
+        off its anchor: a wheel's name from any side of its disc, not from its upper left
+        alone, which an arrow, a bar and a belt may hem in (C5-1.6's moving pulley, its
+        name's leader across the belt's run; twenty-seventh round (c))."""
+        if label.spots is not None and len(label.spots):
+            spots = self.ax.transData.transform(np.asarray(label.spots, dtype=float))
+            led = np.vstack([anchor[None, :], spots[self._clear_spots(label, spots)]])
+            return led, np.linalg.norm(led - anchor, axis=1) / self.px
         along = label.along if label.along is not None else label.shaft
         if along is None:
             return anchor[None, :], np.zeros(1)
@@ -323,6 +344,24 @@ class Layout:
                 pts.append(p)
                 off.append(float(np.linalg.norm(p - anchor)) / self.px)
         return np.array(pts), np.array(off)
+
+    def _clear_spots(self, label: Label, spots: np.ndarray) -> np.ndarray:
+        """Which of a name's other spots (display) lie clear of what is drawn over its body:
+        farther than `SPOT_CLEAR` points from another body's bar and from every arrow. A
+        leader starting on another body's bar reads as that bar's (C5-E.5's "R erradioko
+        gurpila" led from the chassis bar, which runs up its wheel's disc). Thin lines do not
+        count: a wheel's radii to its points run under the arm that carries it (C5-E.1)."""
+        owner = label_owner(label.gid)
+        bars = (self.outline_owners != owner) & self.outline_bars if len(self.outline_bars) else np.zeros(0, bool)
+        other = self.outlines[bars] if len(bars) else np.zeros((0, 2, 2))
+        segs = np.concatenate([other, self.arrows]) if len(self.arrows) else other
+        if not len(segs):
+            return np.ones(len(spots), bool)
+        a, b = segs[:, 0][None], segs[:, 1][None]                                  # (1, M, 2)
+        ab = b - a
+        t = np.clip(((spots[:, None, :] - a) * ab).sum(axis=-1) / np.maximum((ab * ab).sum(axis=-1), 1e-12), 0, 1)
+        gap = np.linalg.norm(a + t[..., None] * ab - spots[:, None, :], axis=-1)  # (K, M)
+        return gap.min(axis=1) > SPOT_CLEAR * self.px
 
     def _fixed_cost(self, label: Label, boxes: np.ndarray, dist: np.ndarray,
                     dirs: np.ndarray) -> np.ndarray:
@@ -417,79 +456,86 @@ class Layout:
 
     def _areas(self, label: Label, boxes: np.ndarray) -> np.ndarray:
         """What a body's name or a vector's value costs for lying on another body's area
-        (`LabelBoard.area`): `AREA` × the part of its box (sampled on `AREA_GRID`) inside
-        the discs, plates and bands of bodies other than its own (`label_owner`). Covering
-        only outlines was weighed: a name inside another wheel, clear of its rim, was free and
-        read as that wheel's (C5-E.6's quadre on the front wheel, C5-E.4's xassís in the left
-        wheel, C5-1.4's portador in planet 2, C5-1.3's v_E on the support; issue 30,
-        twenty-first round (d)). Labels of points and centres are not weighed: they sit on
-        their point, wherever it is."""
+        (`LabelBoard.area`) or on hatching: `AREA` × the part of its box (sampled on
+        `AREA_GRID`) inside the discs, plates and bands of bodies other than its own
+        (`label_owner`), and inside any hatched fill, its own body's too (owner ""): text
+        over hatching is not read (C5-E.2's "gurpil zentral finkoa" on the fixed wheel's
+        hatched band; issue 30, twenty-seventh round (c)). Covering only outlines was weighed:
+        a name inside another wheel, clear of its rim, was free and read as that wheel's
+        (C5-E.6's quadre on the front wheel, C5-E.4's xassís in the left wheel, C5-1.4's
+        portador in planet 2, C5-1.3's v_E on the support; twenty-first round (d)). Labels of
+        points and centres are not weighed: they sit on their point, wherever it is."""
         owner = label_owner(label.gid)
         others = [path for body, path in self.areas if owner is not None and body != owner]
-        cost = AREA * covered_part(boxes, others) if others else np.zeros(len(boxes))
-        return cost + self._rims(label, owner, boxes)
-
-    def _rims(self, label: Label, owner: Optional[str], boxes: np.ndarray) -> np.ndarray:
-        """What a vector's value costs for another body's outline (a wheel's rim, a bar's
-        side) running through its box: `RIM`, as much as lying on that body's area. A box
-        just outside a wheel but on its rim reads as the wheel's as much as one inside it,
-        and the areas alone left that place free (C5-E.6's v_P on the front wheel's rim;
-        issue 30, twenty-fourth round (b)). Names of bodies are not weighed here (a name
-        beside its own body may touch a neighbour's outline: `_leader_over`)."""
-        if owner is None or not label.gid.startswith(("velocity:", "acceleration:")) or not len(self.outlines):
-            return np.zeros(len(boxes))
-        other = (self.outline_owners != owner) & (self.outline_owners != "")
-        if not other.any():
-            return np.zeros(len(boxes))
-        inner = boxes + np.array([1, 1, -1, -1]) * PAD * self.px
-        return RIM * np.minimum(_segments_in_boxes(self.outlines[other], inner), 1.0)
+        return AREA * covered_part(boxes, others) if others else np.zeros(len(boxes))
 
     def _lines_under(self, label: Label, boxes: np.ndarray) -> np.ndarray:
-        """What a label other than a point's costs for lying across drawn lines: `LINE_OVER` for
-        each line (a body's outline, bar, rim or hatching; a construction line: `avoid`
-        weights in `DRAWN`) that runs through its box grown by `OBSTACLE_PAD` (its text and
-        `PAD`, 4 points: half a bar's width, so that no bar's stroke touches it), counted exactly
-        (`_lines_in_boxes`), its own body's lines too: a name across its own wheel's rim is
-        as hard to read (C5-E.5's "R erradioko gurpila"), and inside the disc or beside it
-        is free. The areas alone
-        (`_areas`) left a label free to straddle a rim, a bar or a hatched band, where it
-        reads as that body's (C5-1.2's v_J∈OJ across the left wheel's rim, C5-2.2's v_O on
-        the chassis' bar, C5-E.2's names on the hatched fixed wheel, C5-1.1's name across a
-        dash-dot line; issue 30, twenty-fourth round (f)). Sampling the lines (`COVER`)
-        weighs a line by its length inside the box, a few points for a rim crossed at its
-        edge, less than a step away from the anchor."""
+        """What a label other than a point's costs for lying across drawn lines (a body's
+        outline, bar, rim or hatching; a construction line: `avoid` weights in `DRAWN`) that
+        run through its box grown by `OBSTACLE_PAD` (its text and `PAD`, 4 points: half a
+        bar's width, so that no bar's stroke touches it), counted exactly, each line once
+        (`_lines_in_boxes`). One rule, two weights, by what the line does to the label:
+        another body's line through a body's name or a vector's value reads it as that
+        body's, as much as lying on its area: `AREA` each (C5-E.6's v_P on the front wheel's
+        rim, twenty-fourth round (b); C5-1.2's v_J∈OJ across the left wheel's rim, C5-2.2's
+        v_O on the chassis' bar, C5-1.4's names across the planets, twenty-fourth round (f));
+        any other line (its own body's: a name across its own wheel's rim, C5-E.5's "R
+        erradioko gurpila"; hatching; a dash-dot construction line, C5-1.1) only makes it
+        hard to read: `LINE_OVER` each. Inside a disc or beside it is free. A value's box
+        crossed by another body's outline paid twice before, `RIM` and `LINE_OVER`: two rules
+        for one fault (twenty-seventh round (c)). Sampling the lines (`COVER`) weighs a line
+        by its length inside the box, a few points for a rim crossed at its edge, less than
+        a step away from the anchor."""
         if label.gid.startswith(POINT_GIDS) or not len(self.drawn):
             return np.zeros(len(boxes))
         clear = boxes + np.array([-1, -1, 1, 1]) * OBSTACLE_PAD * self.px    # a bar's half width beyond the text
-        return LINE_OVER * _lines_in_boxes(self.drawn, self.drawn_line, clear)
+        owner = label_owner(label.gid)
+        other = ((self.drawn_owner != owner) & (self.drawn_owner != "") if owner is not None
+                 else np.zeros(len(self.drawn), bool))
+        cost = LINE_OVER * _lines_in_boxes(self.drawn[~other], self.drawn_line[~other], clear)
+        if other.any():
+            cost += AREA * _lines_in_boxes(self.drawn[other], self.drawn_line[other], clear)
+        return cost
 
     def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
-        """What the leader of an arrow's label (`Label.along`: a polygon's) costs for crossing
-        what is drawn: `LEADER_CROSS` / 3 for
-        each sample of it (at most 0.9 `LEADER_CROSS`) (every `SAMPLE` points, from `LEADER_CLEAR` beyond its anchor to the
-        box) on an arrow, a bar or a mark. A leader drawn across other arrows of a polygon led
-        the eye to the wrong arrow (001's a_AB^t across a_FB^t and a_F∈N/R, issue 30,
-        eighteenth round (d)). Every leader also costs `BODY_CROSS` for each time it crosses
-        a drawn body's outline, bar or the ground's line (a body's name: another body's, as
-        it reaches into its own), counted exactly: a leader across a wheel or the ground reads as
-        pointing at it (C5-1.2's v_J∈OJ across the left wheel, C5-1.4's I labels across the
-        planet, C5-E.6's chainring name across the ground; issue 30, twentieth round (c))."""
+        """What the way from a label's anchor to its box costs for crossing what is drawn.
+        That way is its leader, and for a body's name or a vector's value also the short
+        way from its anchor to a box set beside it without one (`LEADER` points or less):
+        a line between a name and its body reads the name as the other side's (C5-1.6's
+        "polea mugikorra" above the belt's run, its pulley below it; issue 30,
+        twenty-seventh round (c)). It costs `BODY_CROSS` for each time it crosses a drawn
+        body's outline or the ground's line (a body's name: another body's, as it reaches
+        into its own), and `BAR_CROSS` for each bar of another body, counted exactly (`_outlines_crossed`):
+        a leader across a wheel or the ground reads as pointing at it (C5-1.2's v_J∈OJ across
+        the left wheel, C5-1.4's I labels across the planet, C5-E.6's chainring name across
+        the ground; twentieth round (c)), and one across a bar is lost in it or reads as
+        the bar's (C5-E.5's "R erradioko gurpila" across the chassis, twenty-seventh round
+        (c)). The leader of an arrow's label (`Label.along`: a polygon's) also costs
+        `LEADER_CROSS` / 3 for each sample of it (at most 0.9 `LEADER_CROSS`) (every
+        `SAMPLE` points, from `LEADER_CLEAR` beyond its anchor to the box) on an arrow, a bar
+        or a mark: a leader drawn across other arrows of a polygon led the eye to the wrong
+        arrow (001's a_AB^t across a_FB^t and a_F∈N/R, eighteenth round (d)). The leader of
+        an arrow's label, of a body's name or of a vector's value costs `ARROW_CROSS` for
+        each arrow it crosses, counted exactly (`_arrows_crossed`): a polygon's arrows, and a
+        mechanism's vectors, which a name's leader across them pointed along (C5-1.2's bar
+        OJ across v_J, C5-E.1's arm OC across v_P; twenty-seventh round (c))."""
         boxes, dist, _, at, _ = cand
         cost = np.zeros(len(boxes))
         far = np.flatnonzero(dist >= LEADER)
+        way = far if label_owner(label.gid) is None else np.arange(len(boxes))
+        if len(way) and len(self.outlines):
+            cost[way] = self._outlines_crossed(label, at[way], _edges(at[way], boxes[way]))
         if not len(far) or not len(self.obstacles):
             return cost
         centres = (boxes[far, :2] + boxes[far, 2:]) / 2
         d = centres - at[far]
         length = np.linalg.norm(d, axis=1)
         edge = _edges(at[far], boxes[far])
-        own = self.outline_owners == label.gid.removeprefix("body:") if label.gid.startswith("body:") else None
-        outlines = self.outlines if own is None or not len(own) else self.outlines[~own]   # a name reaches into its body
-        cost[far] = BODY_CROSS * _arrows_crossed(at[far], edge, outlines, OBSTACLE_PAD * self.px)
+        if label.along is not None or label_owner(label.gid) is not None:
+            cost[far] += ARROW_CROSS * _arrows_crossed(at[far], edge, self.arrows, OBSTACLE_PAD * self.px)
         if label.along is None:
             dots = self._dots_passed(at, edge, far, len(boxes)) if label.gid.startswith(DOT_GIDS) else 0.0
             return cost + LEADER_OVER * dots
-        cost[far] += ARROW_CROSS * _arrows_crossed(at[far], edge, self.arrows, OBSTACLE_PAD * self.px)
         reach = np.linalg.norm(edge - at[far], axis=1)
         step, pad = SAMPLE * self.px, OBSTACLE_PAD * self.px
         s = np.arange(LEADER_CLEAR * self.px, float(reach.max()) + step, step)          # (S,)
@@ -506,6 +552,22 @@ class Layout:
         # at most just under a leader through a label (`LEADER_CROSS`), which reads worse
         cost[far] += np.minimum(LEADER_CROSS / 3 * (hit.reshape(valid.shape) & valid).sum(axis=1),
                                 0.9 * LEADER_CROSS)
+        return cost
+
+    def _outlines_crossed(self, label: Label, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:
+        """For each way starts[k]→ends[k] of `label` to its box, `BODY_CROSS` for each drawn
+        outline it crosses and `BAR_CROSS` for each bar of a body other than the label's own
+        (`_arrows_crossed`: exactly, not those it starts on); a body's name does not count its
+        own body's outlines and bars (it reaches into its body)."""
+        owner = label_owner(label.gid)
+        keep = np.ones(len(self.outlines), bool)
+        if label.gid.startswith("body:") and len(self.outline_owners):
+            keep = self.outline_owners != owner
+        bar = keep & self.outline_bars & (self.outline_owners != owner) if len(self.outline_bars) else keep & False
+        pad = OBSTACLE_PAD * self.px
+        cost = BODY_CROSS * _arrows_crossed(starts, ends, self.outlines[keep & ~bar], pad)
+        if bar.any():
+            cost += BAR_CROSS * _arrows_crossed(starts, ends, self.outlines[bar], pad)
         return cost
 
     def _dots_passed(self, at: np.ndarray, edge: np.ndarray, far: np.ndarray, n: int) -> np.ndarray:

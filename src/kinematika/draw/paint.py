@@ -36,7 +36,7 @@ def paint_mark(cv: Canvas, m: Mark) -> Optional[Any]:
     pts = np.asarray(m.points, dtype=float)
     if m.kind == "text":
         cv.label(pts[0], m.text, m.colour, m.priority, m.gid, m.prefer, weight=m.weight,
-                 style=m.style, size=m.size or LABEL_SIZE, shaft=m.shaft)
+                 style=m.style, size=m.size or LABEL_SIZE, shaft=m.shaft, spots=m.spots)
         return None
     if m.kind == "clear" and m.group.startswith("area:"):
         cv.board.area(m.group.removeprefix("area:"), pts)
@@ -54,7 +54,20 @@ def paint_mark(cv: Canvas, m: Mark) -> Optional[Any]:
             cv.add(drawn, m.moves_with)
     if m.avoid > 0:
         _avoid(cv, m, pts)
+    if m.hatch and m.kind in ("polygon", "ring"):
+        cv.board.area("", hatched_region(m, pts))
     return None
+
+
+def hatched_region(m: Mark, pts: np.ndarray) -> np.ndarray:
+    """The region a hatched mark covers (a closed polygon, data coordinates): a polygon's
+    own, a ring's band as its outer circle then its inner one backwards. No name or value
+    sits on it (`LabelBoard.area` with no owner)."""
+    if m.kind == "polygon":
+        return np.vstack([pts, pts[:1]])
+    t = np.linspace(0, 2 * np.pi, 37)
+    circle = np.column_stack([np.cos(t), np.sin(t)])
+    return np.vstack([pts[0] + m.r * circle, (pts[0] + (m.r - m.band) * circle)[::-1]])
 
 
 def artist(m: Mark) -> Optional[Any]:
@@ -70,8 +83,10 @@ def _avoid(cv: Canvas, m: Mark, pts: np.ndarray) -> None:
     """Labels keep off the mark: a clear mark's polyline, a dot's point, another's points
     round (back to the first)."""
     if m.kind == "clear":
-        owner = m.group.removeprefix("outline:") if m.group and m.group.startswith("outline:") else ""
-        cv.board.avoid(*pts, weight=m.avoid, radius=m.radius, owner=owner)
+        role, _, owner = (m.group or "").partition(":")
+        outline = role in ("outline", "bar")
+        cv.board.avoid(*pts, weight=m.avoid, radius=m.radius, owner=owner if outline else "",
+                       bar=role == "bar")
     elif m.kind == "dot":
         cv.board.avoid(pts[0], weight=m.avoid, radius=m.radius)
     else:

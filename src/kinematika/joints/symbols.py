@@ -94,6 +94,7 @@ class Mark:
     group: str = ""                     # ROLE:KEY of the thing it belongs to
     about: Optional[dict] = None        # what the page needs to move it (a live arrow)
     shaft: Optional[Vec] = None         # a vector's value: its arrow (start, end), beside which it may sit
+    spots: Optional[Vec] = None         # a body's name: other points of its body it may be led from
 
 
 # shapes of symbols -------------------------------------------------------------------------
