@@ -41,7 +41,9 @@ def _part_on(box: np.ndarray, path) -> float:
 @over(name=NOTES_SEEDS)
 def test_no_name_or_value_sits_on_another_body(areas, name):
     """No body's name and no vector's value covers more than `TOLERANCE` of its box with
-    another body's disc, plate or band."""
+    another body's disc, plate or band. Bodies welded together are one piece, their areas one
+    ("rear+sprocket"): C5-E.6's sprocket is named by its hub, on the wheel it is welded to —
+    off the wheel the only room was under the ground (twenty-seventh round (f))."""
     bad = []
     for lang in ("en", "ca"):
         for placed, shapes in areas[(name, lang)]:
@@ -51,7 +53,7 @@ def test_no_name_or_value_sits_on_another_body(areas, name):
                     continue
                 for body, path in shapes:
                     part = _part_on(p.box, path)
-                    if body != owner and part > TOLERANCE and KNOWN.get((name, p.label.text)) != body:
+                    if owner not in body.split("+") and part > TOLERANCE and KNOWN.get((name, p.label.text)) != body:
                         bad.append(f"{lang} {p.label.text!r} on {body} ({part:.0%})")
     assert not bad, "; ".join(bad)
 

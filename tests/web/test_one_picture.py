@@ -96,12 +96,14 @@ READ_SVG = """() => {
       if (tag === 'tspan' || tag === 'title' || (n.closest('g.arrow') && n !== n.closest('g.arrow'))) continue;
       if (tag === 'g' && !n.classList.contains('arrow')) continue;
       if (tag === 'g') {
-        const [line, ...heads] = n.children;
+        const casing = n.querySelector(':scope > polyline.casing');
+        const [line, ...heads] = [...n.children].filter((c) => !c.classList.contains('casing'));
         const hp = heads.map((h) => pts(h.getAttribute('points') || ''));
         const head = hp.length && hp[0].length === 3 ? [Math.hypot(hp[0][0][0] - (hp[0][1][0] + hp[0][2][0]) / 2, hp[0][0][1] - (hp[0][1][1] + hp[0][2][1]) / 2) / pt,
                                   Math.hypot(hp[0][1][0] - hp[0][2][0], hp[0][1][1] - hp[0][2][1]) / 2 / pt] : null;
         out.push({ kind: 'arrow', hidden: n.getAttribute('visibility') === 'hidden', line: pts(line.getAttribute('points') || ''),
-                   heads: hp, look: { ...look(line), fill: colour(heads[0].getAttribute('fill')), head, join: null, dash: null } });
+                   heads: hp, look: { ...look(line), fill: colour(heads[0].getAttribute('fill')), head, join: null, dash: null,
+                                      halo: casing ? (casing.getAttribute('stroke-width') - line.getAttribute('stroke-width')) / 2 / PT : 0 } });
       } else if (tag === 'text') out.push({ kind: 'text', content: [...n.children].map(
           (t) => (t.hasAttribute('data-line') ? '\\n' : '') + t.textContent).join(''),
           look: { fill: n.getAttribute('fill'), size: n.getAttribute('font-size') / pt,
@@ -183,7 +185,7 @@ def _artist(a) -> dict:
         return {"kind": "arrow", "ends": np.asarray(a._posA_posB, dtype=float), "look": {
             **look, "head": [style.head_length * a.get_mutation_scale(),
                                                      style.head_width * a.get_mutation_scale()],
-            "cap": "butt", "join": None, "dash": None}}
+            "cap": "butt", "join": None, "dash": None, "halo": _halo(a)}}
     if isinstance(a, Annulus):
         return {"kind": "ring", "at": np.asarray(a.get_center()), "r": max(a.get_radii()),
                 "look": {**look, "cap": None, "join": None}}
@@ -194,6 +196,13 @@ def _artist(a) -> dict:
         return {"kind": "polygon", "points": _open(a.get_xy()),
                 "look": {**look, "cap": look["cap"] if look["dash"] else None}}
     raise AssertionError(f"an artist of no mark: {a!r}")
+
+
+def _halo(a) -> float:
+    """An arrow's white casing, points beyond its stroke on each side (its path effect's
+    stroke, `draw.paint`), 0 when it has none."""
+    strokes = [e for e in a.get_path_effects() if hasattr(e, "_gc")]
+    return (strokes[0]._gc["linewidth"] - a.get_linewidth()) / 2 if strokes else 0
 
 
 def _patch_look(a) -> dict:
@@ -338,7 +347,7 @@ def test_the_page_and_matplotlib_paint_the_same_primitives(page, name):
         ends = arrow_ends(a)
         k = next((k for k, b in enumerate(painted) for m in drawn
                   if close(b["ends"], m.points) and close(ends, b["ends"] + offset(m)) and same_look(a, b)), None)
-        assert k is not None, f"{name}: an arrow {ends} not in matplotlib"
+        assert k is not None, f"{name}: an arrow {ends} {a['look']} not in matplotlib {[b['look'] for b in painted]}"
         painted.pop(k)
     # texts: the same labels (a label that says words in the page's language, such as a far
     # centre's "far off at", begins with the same name)

@@ -22,6 +22,10 @@ from .style import BAR_WIDTH, GROUND, INK, POINT_LABEL
 
 DOTTED_SPHERE = (4.0, 3.0)      # the sphere of a spherical linkage: dashes, in line widths
 FALLING = "\\\\\\\\"              # matplotlib's hatching falling to the right, as dense as the frame's ////
+TIE = 0.05                # half the width of the hatched edge a fixed strand is tied to (of the drawing's size)
+APART_DASH = (4.0, 3.0)   # a circle in another plane than the ground it crosses: dashes, in line widths
+APART_FILL = 0.1          # and its fill, lighter than a wheel's (0.25)
+MATERIAL = 0.6       # how deep (of the drawing's size) the ground beyond a hatched edge is an area (`hatched_edge`)
 DISC_FILL = 0.5      # a moving disc's translucent fill: under the frame's hatching (zorder 1)
                      # and outline (2), so a track a wheel overlaps stays seen (C5-E.1's 2R
                      # wheel over "pista zilindrikoa"; issue 30, twenty-fourth round (h))
@@ -57,7 +61,7 @@ def _skeleton(ctx: Context, body: BodyView, colour: str, width: float = BAR_WIDT
     for line in body.skeleton:
         ctx.add("line", line, width=width, colour=colour, alpha=0.9, cap="round", join="round",
                 zorder=2, gid=f"body:{body.name}", moves_with=None if body.frame else body.name)
-        ctx.avoid(*line, bar=True)
+        ctx.avoid(*line, bar=True, width=width)
 
 
 def _body(ctx: Context, body: BodyView) -> None:
@@ -67,6 +71,10 @@ def _body(ctx: Context, body: BodyView) -> None:
     if wheels and all(_on_wheel(p, wheels) for p in pts):
         _radii(ctx, body, pts, wheels)       # the disc is the body: mark its points by radii
         pts = []
+    elif wheels:                             # a crank on a disc: its points on the disc by radii
+        on = [p for p in pts if _on_wheel(p, wheels) and not _at_centre(p, wheels, ctx.size)]
+        _radii(ctx, body, on, wheels)
+        pts = [p for p in pts if not any(p is q for q in on)]
     side = None                              # a bar's label beside it, away from the mechanism
     spots = None                             # other points of the body its name may be led from
     if body.skeleton:
@@ -90,7 +98,7 @@ def _body(ctx: Context, body: BodyView) -> None:
     if len(pts) == 2:
         ctx.add("line", pts, width=BAR_WIDTH, colour=body.colour, alpha=0.9, cap="round",
                 zorder=2, gid=f"body:{body.name}", moves_with=body.name)
-        ctx.avoid(*pts, bar=True)
+        ctx.avoid(*pts, bar=True, width=BAR_WIDTH)
         anchor = (pts[0] + pts[1]) / 2
         side = _beside(ctx, pts[0], pts[1])
         spots = bar_spots(pts)
@@ -142,6 +150,16 @@ def _on_wheel(p: np.ndarray, wheels: list[ShapeView]) -> bool:
     return any(np.linalg.norm(p - w.center) <= w.radius * (1 + 1e-6) for w in wheels)
 
 
+def _at_centre(p: np.ndarray, wheels: list[ShapeView], size: float) -> bool:
+    """Whether `p` is a wheel's centre: where a crank on the disc starts (`_body`). A body
+    with a disc and points off it (C5-E.6's chainring: the chain's contact T2 on its rim, the
+    pedal P on its crank, L below the axle C) is its disc, with its points on the disc marked
+    by radii, and its crank, a bar from the centre to the points off the disc: one bar through
+    T2, C and P read as a crank from the top of the chainring to the pedal (issue 30,
+    twenty-seventh round (f))."""
+    return any(np.linalg.norm(p - w.center) <= 1e-9 * size for w in wheels)
+
+
 def _radii(ctx: Context, body: BodyView, pts: list, wheels: list[ShapeView]) -> None:
     """Lines from a wheel's centre to its marked points (a wheel's points are on its disc)."""
     for p in pts:
@@ -166,13 +184,14 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
         ctx.area(*outline)
     elif s.kind == "circle":
         gear, centre = s.role == "gear", s.centre()
+        fill = 0.18 if gear else 0.25
         ctx.add("circle", [centre], r=s.radius, colour="none", fill=body.colour,
-                alpha=0.18 if gear else 0.25, width=0, zorder=DISC_FILL, moves_with=name)
-        ctx.add("circle", [centre], r=s.radius, colour=body.colour, width=1.6 if gear else 2.2,
-                dash=gear, zorder=3, gid=gid, moves_with=name)
+                alpha=APART_FILL if s.apart else fill, width=0, zorder=DISC_FILL, moves_with=name)
+        ctx.add("circle", [centre], r=s.radius, colour=body.colour, width=1.6 if gear or s.apart else 2.2,
+                dash=APART_DASH if s.apart else gear, zorder=3, gid=gid, moves_with=name)
         for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
             ctx.add("line", [centre - 0.8 * s.radius * d, centre + 0.8 * s.radius * d],
-                    width=1.0, colour=body.colour, alpha=0.8, zorder=3, moves_with=name)
+                    width=1.0, colour=body.colour, alpha=0.4 if s.apart else 0.8, zorder=3, moves_with=name)
         ctx.avoid(*_ring(centre, s.radius))
         ctx.area(*_ring(centre, s.radius))
     elif s.kind == "line":
@@ -362,6 +381,9 @@ def _fixed_body(ctx: Context, body: BodyView) -> None:
         if s.kind != "line":
             _ground_shape(ctx, s)
             continue
+        if cable_strand(ctx.scene, body):
+            anchor, side = _tied_strand(ctx, body, s)
+            continue
         seg = _fixed_span(ctx, body, s)
         if seg is None:
             continue
@@ -378,27 +400,79 @@ def _fixed_body(ctx: Context, body: BodyView) -> None:
                   style="italic")
 
 
+def cable_strand(scene: Any, body: BodyView) -> bool:
+    """Whether a fixed line body is a strand of a cable, not a piece of ground: it touches a
+    wheel that a moving strand (a straight body: a line, no circle) also touches — the one
+    cable wrapped round that pulley, in by one strand and out by the other (C5-1.5's strand 1,
+    tied to the ceiling, beside strand 2 on pulley 1). A wheel that rolls on fixed lines
+    alone (C5-1.2's inclined planes) rolls on the ground."""
+    for j in scene.joints:
+        if j.contact is None or body.name not in (j.a, j.b):
+            continue
+        wheel = j.b if j.a == body.name else j.a
+        for k in scene.joints:
+            other = scene.bodies.get(k.b if k.a == wheel else k.a)
+            if k is j or k.contact is None or wheel not in (k.a, k.b) or other is None:
+                continue
+            if not (other.frame or other.fixed) and any(sh.kind == "line" for sh in other.shapes) \
+                    and not any(sh.kind == "circle" for sh in other.shapes):
+                return True
+    return False
+
+
+def _tied_strand(ctx: Context, body: BodyView, s: ShapeView) -> tuple[Optional[np.ndarray], Optional[np.ndarray]]:
+    """A fixed strand (`cable_strand`) drawn as what it is: a cable in the ground's grey, from
+    its points to the pulley it leaves (`_line_span`), tied at each of its points that ends it
+    to a short hatched edge across it, hatched beyond the point — the ceiling it hangs from.
+    Drawn hatched along its length, as a fixed line is, it read as a wall, and its point G,
+    where the notes tie it to the ceiling, as floating (C5-1.5; issue 30, twenty-seventh round
+    (f)). Its name's anchor and side, as a bar's."""
+    seg = _line_span(ctx, body, s)
+    if seg is None:
+        return None, None
+    p, q = (np.asarray(x, dtype=float) for x in seg)
+    ctx.add("line", [p, q], width=2.2, colour=GROUND, zorder=2, gid=f"shape:{body.name}")
+    ctx.avoid(p, q)
+    half = TIE * ctx.size
+    for end, other in ((p, q), (q, p)):
+        if not any(np.linalg.norm(end - np.asarray(x, dtype=float)) <= 1e-6 * ctx.size for x in body.points.values()):
+            continue
+        out = (end - other) / max(float(np.linalg.norm(end - other)), 1e-300)
+        across = perpendicular(out)
+        hatched_edge(ctx, end - half * across, end + half * across, out, f"ground:tie:{body.name}")
+    return (p + q) / 2, _beside(ctx, p, q)
+
+
 def _fixed_span(ctx: Context, body: BodyView, s: ShapeView) -> Optional[tuple[np.ndarray, np.ndarray]]:
-    """The piece of a fixed line worth drawing: from the body's own points on it (where the
-    piece ends, a plane's corner) to a wheel's radius beyond each contact on it (a tenth of
-    the figure when what touches it is no circle), inside the reach."""
+    """The piece of a fixed line worth drawing (`fixed_ends`), inside the reach."""
+    through, direction = s.line()
+    ends = fixed_ends(ctx.scene, body, s)
+    if ends is None:
+        return clip_line(through, direction, ctx.reach)
+    return clip_segment(*ends, ctx.reach)
+
+
+def fixed_ends(scene: Any, body: BodyView, s: ShapeView) -> Optional[tuple[np.ndarray, np.ndarray]]:
+    """The ends of the piece of a fixed line worth drawing: from the body's own points on it
+    (where the piece ends, a plane's corner) to a wheel's radius beyond each contact on it (a
+    tenth of the figure when what touches it is no circle); None for the whole line."""
     through, direction = s.line()
     n = perpendicular(direction)
     own = [float((p - through) @ direction) for p in body.points.values()
-           if abs(float((p - through) @ n)) <= 1e-6 * ctx.size]
+           if abs(float((p - through) @ n)) <= 1e-6 * scene.size]
     ts = list(own)
-    for j in ctx.scene.joints:
+    for j in scene.joints:
         if body.name not in (j.a, j.b) or j.contact is None:
             continue
-        other = ctx.scene.bodies.get(j.b if j.a == body.name else j.a)
+        other = scene.bodies.get(j.b if j.a == body.name else j.a)
         reach = min((c.radius for c in (other.shapes if other else []) if c.kind == "circle"),
-                    default=0.1 * ctx.size)
+                    default=0.1 * scene.size)
         t = float((j.contact - through) @ direction)
         below, above = not own or t <= min(own), not own or t >= max(own)
         ts += [t] + ([t - reach] if below else []) + ([t + reach] if above else [])
     if len(ts) < 2:
-        return clip_line(through, direction, ctx.reach)
-    return clip_segment(through + min(ts) * direction, through + max(ts) * direction, ctx.reach)
+        return None
+    return through + min(ts) * direction, through + max(ts) * direction
 
 
 def _fixed_circle_name(ctx: Context, body: BodyView) -> None:
@@ -487,7 +561,12 @@ def _across(edge: np.ndarray) -> bool | str:
 
 
 def hatched_edge(ctx: Context, p: np.ndarray, q: np.ndarray, side: np.ndarray, gid: str) -> None:
-    """A fixed edge from p to q, hatched on `side` (where the frame's material is)."""
+    """A fixed edge from p to q, hatched on `side` (where the frame's material is). The
+    material beyond it, `MATERIAL` of the drawing deep, is the fixed body's area: another
+    body's name or a vector's value is not set in the ground, under its hatching, where it
+    reads as no part of the mechanism and hangs on a long leader (C5-1.3's v_ar,E under the
+    ground, far from its short arrow; C5-E.6's sprocket and chainring named under the ground;
+    issue 30, twenty-seventh round (f))."""
     band = HATCH_BAND * ctx.size
     ctx.add("line", [p, q], width=1.8, colour=GROUND, zorder=2, gid=gid)
     ctx.add("polygon", [p, q, q + band * side, p + band * side], colour=GROUND, width=0,
@@ -495,6 +574,8 @@ def hatched_edge(ctx: Context, p: np.ndarray, q: np.ndarray, side: np.ndarray, g
     ctx.avoid(p, q)
     ctx.avoid(p + 0.5 * band * side, q + 0.5 * band * side, weight=0.7)
     ctx.avoid(p + band * side, q + band * side, weight=0.7)
+    deep = MATERIAL * ctx.size
+    ctx.area(p, q, q + deep * side, p + deep * side)
 
 
 def _points(ctx: Context) -> None:

@@ -36,6 +36,7 @@ def build_scene(inst: Instant, sol: Any = None, options: DrawOptions | None = No
     geos = _joint_geometries(inst, sol or solver)
     _mark_ground_sides(bodies, model, geos, num)
     _mark_gears(bodies, model, geos, num)
+    _mark_other_planes(bodies)
     joints = [_joint(j, geos.get(j.id), num) for j in model.joints]
     for view in joints:
         view.contact_name = (options.contacts or {}).get(view.id, "")
@@ -311,6 +312,37 @@ def _mark_gears(bodies: dict[str, BodyView], model: Any, geos: dict, num: Number
         if kind == "internal" and len(circles) == 2:
             outer = max(circles, key=lambda c: c.radius)
             outer.ring = True
+
+
+def _mark_other_planes(bodies: dict[str, BodyView]) -> None:
+    """A moving body's circle that crosses the ground's outline (a fixed circle or line
+    through its disc, not touching it) lies in another plane: two bodies of one plane do
+    not overlap. It is marked `apart`, drawn dashed and light (`bodies._moving_shape`): C5-E.1's
+    2R wheel, solidary with the R wheel that rolls in the track, passes over the track's
+    wall, and drawn as the other wheels are it read as crossing it (issue 30,
+    twenty-seventh round (f))."""
+    ground = [s for b in bodies.values() if b.frame or b.fixed for s in b.shapes]
+    size = max([abs(float(x)) for b in bodies.values() for p in b.points.values() for x in p] + [1.0])
+    tol = 1e-6 * size
+    for body in bodies.values():
+        if body.frame or body.fixed:
+            continue
+        for s in body.shapes:
+            if s.kind == "circle" and s.arc is None and not s.ring and any(_crosses(s, g, tol) for g in ground):
+                s.apart = True
+
+
+def _crosses(s: ShapeView, g: ShapeView, tol: float) -> bool:
+    """Whether the ground's shape `g` (a circle or a line) runs through the disc of the
+    circle `s`, cutting its rim twice (a tangent one touches it)."""
+    if g.kind == "circle" and g.arc is None:
+        d = float(np.linalg.norm(s.centre() - g.centre()))
+        return abs(s.radius - g.radius) + tol < d < s.radius + g.radius - tol
+    if g.kind == "line":
+        through, direction = g.line()
+        n = np.array([-direction[1], direction[0]])
+        return abs(float((s.centre() - through) @ n)) < s.radius - tol
+    return False
 
 
 def _nearest_shape(shapes: list[ShapeView], p: Vec) -> Optional[ShapeView]:

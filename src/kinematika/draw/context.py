@@ -4,9 +4,11 @@ drawing functions of the bodies (`bodies`), the marks (`marks`) and the vectors 
 receive it from `picture`."""
 from __future__ import annotations
 
+import itertools
 from typing import Any, Optional
 
 import numpy as np
+from matplotlib.path import Path
 
 from ..joints.symbols import Mark, ring
 from .geometry import Box, clip_line
@@ -63,6 +65,35 @@ class Context:
                     out.append(np.asarray(sh.vertices, dtype=float))
         return out
 
+    def hub(self, p: np.ndarray) -> float:
+        """The radius of the largest moving body's disc that turns about `p` (centred there;
+        not a ring, not a part of a disc), 0 when none does: a fixed pivot there is the
+        wheel's axle, whose support `joints.symbols.support` sets outside it."""
+        tol = 1e-6 * self.size
+        radii = [float(sh.radius) for body in self.scene.bodies.values() if not body.frame and not body.fixed
+                 for sh in body.shapes if sh.kind == "circle" and not sh.ring and sh.arc is None
+                 and np.linalg.norm(np.asarray(sh.center, dtype=float) - p) <= tol]
+        return max(radii, default=0.0)
+
+    def crowded(self, pts: Any, hub: np.ndarray) -> int:
+        """How many of `pts` lie on a moving body: inside a disc or a closed outline of it
+        (`keep_out`) not centred at `hub`, or on a bar between its points."""
+        tol = 1e-6 * self.size
+        outlines = [np.asarray(poly, dtype=float) for poly in self.keep_out()
+                    if np.linalg.norm(np.mean(np.asarray(poly, dtype=float)[:-1], axis=0) - hub) > tol]
+        lines: list[list[Any]] = []
+        for body in self.scene.bodies.values():
+            if not body.frame and not body.fixed:
+                lines += [list(line) for line in body.skeleton] if body.skeleton else [list(body.points.values())]
+        bars = [(a, b) for line in lines for a, b in itertools.pairwise(line)]
+        near = 0.03 * self.size
+        count = 0
+        for q in np.asarray(pts, dtype=float):
+            inside = any(Path(poly).contains_point(q) for poly in outlines if len(poly) >= 3)
+            on_bar = any(_off_segment(q, np.asarray(a, dtype=float), np.asarray(b, dtype=float)) < near for a, b in bars)
+            count += int(inside or on_bar)
+        return count
+
     def clip(self, p: np.ndarray, d: np.ndarray, inset: float) -> Optional[tuple]:
         """The part of the line through `p` along `d` inside the reach shrunk by `inset`, or
         None."""
@@ -76,16 +107,18 @@ class Context:
         self.marks.append(mark)
         return mark
 
-    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, bar: bool = False) -> None:
+    def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, bar: bool = False,
+              width: float = 0.0) -> None:
         """Keep labels off the polyline through these points (a single point too); `weight`
         says how bad covering it is (arrows and marks more than bars), `radius` (points) how
         far around each point the drawing reaches; drawn while a body is (`owner`), it is
         that body's outline (`bar`: its bar), which that body's name may reach across and
-        no other label's leader crosses (`draw.labels`)."""
+        no other label's leader crosses (`draw.labels`); `width` (points) how wide it is
+        drawn, when wider than a line (a bar)."""
         owner = self.owner
         role = "bar" if bar else "outline"
         self.add("clear", [np.asarray(p, dtype=float) for p in polyline], avoid=weight,
-                 radius=radius, zorder=0, **({"group": f"{role}:{owner}"} if owner else {}))
+                 radius=radius, width=width, zorder=0, **({"group": f"{role}:{owner}"} if owner else {}))
 
     def area(self, *polygon: Any) -> None:
         """The region the body being drawn (`owner`) covers, a closed polygon through these
@@ -94,7 +127,22 @@ class Context:
         `LabelBoard.area`). Nothing is painted."""
         if self.owner:
             self.add("clear", [np.asarray(p, dtype=float) for p in polygon], avoid=0.0, zorder=0,
-                     group=f"area:{self.owner}")
+                     group=f"area:{'+'.join(self.welded(self.owner))}")
+
+    def welded(self, body: str) -> list[str]:
+        """`body` and the moving bodies welded to it, directly or through others (one rigid
+        piece: C5-E.6's sprocket on the rear wheel), in the scene's order. Their areas are
+        one: the sprocket's name by its hub, on the wheel it is part of, is on no other body
+        (`LabelBoard.area`); off the wheel, the only room was under the ground."""
+        group, grew = {body}, True
+        while grew:
+            grew = False
+            for j in self.scene.joints:
+                if j.kind.rigid and len({j.a, j.b} & group) == 1 and self.frame not in (j.a, j.b) \
+                        and not any(self.scene.bodies[b].fixed for b in (j.a, j.b)):
+                    group |= {j.a, j.b}
+                    grew = True
+        return [name for name in self.scene.bodies if name in group]
 
     def label(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
               prefer: Any = None, body: Optional[str] = None, group: str = "", layer: str = "",
@@ -108,6 +156,13 @@ class Context:
         self.add("text", [anchor], text=text, colour=colour, priority=priority, gid=gid,
                  prefer=None if prefer is None else np.asarray(prefer, dtype=float),
                  moves_with=body, group=group, layer=layer, zorder=20, **kw)
+
+
+def _off_segment(q: np.ndarray, a: np.ndarray, b: np.ndarray) -> float:
+    """The distance from `q` to the segment ab."""
+    ab = b - a
+    t = float(np.clip((q - a) @ ab / max(float(ab @ ab), 1e-300), 0.0, 1.0))
+    return float(np.linalg.norm(a + t * ab - q))
 
 
 def moving_centroid(scene: Scene, view: Box) -> Any:

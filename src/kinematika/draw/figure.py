@@ -21,6 +21,7 @@ from matplotlib.lines import Line2D
 
 from .lock import MATPLOTLIB
 from .mathcache import shared as _shared_mathtext
+from .bodies import cable_strand, fixed_ends
 from .canvas import Canvas
 from .dimensions import avoid_dimensions, paint_dimensions, reach
 from .geometry import Box
@@ -58,7 +59,7 @@ def render(scene: Scene, options: Optional[DrawOptions] = None) -> Figure:
 
 
 def _render(scene: Scene, options: DrawOptions) -> Figure:
-    drawn = arrows(scene.vectors, scene.size, bars(scene))
+    drawn = arrows(scene.vectors, scene.size, bars(scene), grounds(scene))
     content = framed_box(scene, drawn)
     dimensions = options.dimensions if scene.dim == 2 else None
     if dimensions:
@@ -89,7 +90,7 @@ def zoomable(scene: Scene, options: Optional[DrawOptions] = None,
     mechanism, its arrows and the results within `ZOOMABLE_REACH`, with room for labels).
     Its infinite lines reach `BEYOND` drawing sizes past the frame."""
     options = options or DrawOptions()
-    drawn = arrows(scene.vectors, scene.size, bars(scene))
+    drawn = arrows(scene.vectors, scene.size, bars(scene), grounds(scene))
     if frame is None:
         view = framed_box(scene, drawn, ZOOMABLE_REACH).grow(ZOOMABLE_MARGIN * scene.size)
         frame = view.grow(CLIP_MARGIN * scene.size)
@@ -113,6 +114,25 @@ def bars(scene: Scene) -> list:
             continue
         pts = list(body.points.values())
         out += [(p, q) for i, p in enumerate(pts) for q in pts[i + 1:]]
+    return out
+
+
+def grounds(scene: Scene) -> list:
+    """The ground's straight edges as drawn, hatched on their material's side, which arrows
+    keep out of (`vectors.off_ground`): the frame's lines (far beyond the figure both ways)
+    and the pieces of the fixed bodies' lines (`bodies.fixed_ends`: C5-1.2's inclined planes),
+    each as its two ends; a fixed strand is no ground (`bodies.cable_strand`)."""
+    out = []
+    far = 1e3 * scene.size
+    for body in scene.bodies.values():
+        for shape in body.shapes:
+            if shape.kind != "line" or not (body.frame or body.fixed):
+                continue
+            through, direction = shape.line()
+            ends = None if body.frame else fixed_ends(scene, body, shape)
+            if body.fixed and cable_strand(scene, body):
+                continue
+            out.append(ends or (through - far * direction, through + far * direction))
     return out
 
 

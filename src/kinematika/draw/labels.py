@@ -31,7 +31,7 @@ from scipy.spatial import cKDTree
 from .style import LABEL_SIZE
 import itertools
 
-DISTANCES = (2.5, 6.0, 11.0, 17.0, 25.0, 35.0, 48.0, 64.0, 84.0)   # points: anchor to box
+DISTANCES = (2.5, 6.0, 11.0, 17.0, 25.0, 35.0, 48.0, 64.0, 84.0, 108.0)   # points: anchor to box
 DIRECTIONS = 16
 LEADER = 16.0            # points: labels farther than this from their anchor get a leader
 PAD = 1.5                # points kept free around each label's text
@@ -40,9 +40,12 @@ SAMPLE = 4.0             # points between samples of drawn lines
 PASSES = 4               # refinement passes at most
 GAP = 3.0                # points kept between two labels' boxes (beyond PAD): no two touch
 TIP = 7.0                # points around an arrow's tip that no label covers (its head)
+HEAD = (0.0, 2.0, 4.0, 6.0)   # points back from a mechanism arrow's tip along its shaft: its head (15 pt × 0.4)
 SLIDE = (0.5, 0.35, 0.65, 0.22, 0.78)   # where along its arrow an arrow's label may sit
 SLIDE_END = 18.0         # points: a slid anchor stays this far from the arrow's ends
 LEADER_CLEAR = 6.0       # points of a leader next to its anchor (on its own arrow) not weighed
+BAR_CLEAR = 2.5          # points kept between a label's text and the edge of a wide bar (`LabelBoard.avoid`'s width)
+BLOCK = "block:"          # the owner a joint's block's outline is kept under (`draw.paint`), after its mark's gid
 CLOSE = 14.0             # points: two points' labels nearer than this sit on opposite sides
 POINT_GIDS = ("point:", "contact:")      # the labels of points (a dot with its letter)
 DOT_GIDS = POINT_GIDS + ("icr:", "centre:", "pole:")   # labels whose anchor is a dot or ring drawn there (a point, a centre)
@@ -50,6 +53,8 @@ DOT_NEAR = 4.0           # points: a leader passing this close to another label'
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
+LEADER_VALUE = 15.0      # a mechanism vector's value on a leader (placed `LEADER` or more from its arrow)
+OUTSIDE_VALUE = 120.0    # a mechanism vector's value out of the axes, × the part out: the axes grow to it
 LEADER_OVER = 450.0      # a leader across another label's box, for labels not on an arrow (`Label.along`): worse than a name on another body (`AREA`)
                          # or through another label's dot (a point, a centre: `Layout._dots_passed`)
 ARROW_CROSS = 450.0      # a leader across an arrow (exactly, not sampled): worse than a box over an arrow
@@ -129,6 +134,8 @@ class LabelBoard:
     bars: list[bool] = field(default_factory=list)         # whether each obstacle is a bar
     areas: list[tuple[str, np.ndarray]] = field(default_factory=list)   # (body or "" for hatching, polygon, data)
     arrows: list[np.ndarray] = field(default_factory=list)  # a polygon's arrows, (start, end) data
+    heads: list[np.ndarray] = field(default_factory=list)  # a mechanism's arrows: (start, end), data
+    widths: list[float] = field(default_factory=list)      # each obstacle's drawn width, points (0: thin)
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
             prefer: Any = None, **kw: Any) -> None:
@@ -138,22 +145,26 @@ class LabelBoard:
                                  pref, **kw))
 
     def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, owner: str = "",
-              bar: bool = False) -> None:
+              bar: bool = False, width: float = 0.0) -> None:
         """Keep labels off the drawn polyline through these points (a single point too);
         `weight` says how bad covering it is (arrows and marks more than bars), `radius`
         (points) how far around each point the drawing reaches (a marker's size), `owner`
         the body it outlines (its name's leader may cross it: `Layout._leader_over`), `bar`
-        whether it is a bar (no leader crosses another body's: `BAR_CROSS`)."""
+        whether it is a bar (no leader crosses another body's: `BAR_CROSS`), `width` (points)
+        how wide it is drawn (a bar's, which a label keeps `BAR_CLEAR` from)."""
         self.obstacles.append((np.array([np.asarray(p, dtype=float) for p in polyline]), weight,
                                radius))
         self.owners.append(owner)
         self.bars.append(bar)
+        self.widths.append(width)
 
     def area(self, owner: str, polygon: Any) -> None:
         """The region body `owner` covers (a closed polygon, data coordinates: a wheel's disc,
         a plate, a ring's band), which another body's name or a vector's value does not sit
         on (`Layout._areas`); `owner` "" for a hatched fill (the frame's hatching), which no
-        name or value sits on, its own body's neither: text over hatching is not read."""
+        name or value sits on, its own body's neither: text over hatching is not read; `owner`
+        names the bodies welded together as one piece, joined by "+" (`draw.context.Context.
+        welded`): a name is at home on any of them."""
         self.areas.append((owner, np.asarray(polygon, dtype=float)))
 
     def tip(self, point: Any) -> None:
@@ -169,6 +180,12 @@ class LabelBoard:
         self.avoid(start, end, weight=3.0)
         self.tip(end)
         self.arrows.append(np.array([np.asarray(start, dtype=float), np.asarray(end, dtype=float)]))
+    def head(self, start: Any, end: Any) -> None:
+        """A mechanism's arrow from `start` to `end`: no label may cover its head (`HEAD`
+        points back from its tip along its shaft), which a label set on it hid: C5-1.3's
+        v_ar,E over the head of its own short arrow (issue 30, twenty-seventh round (f)). Its
+        own label beyond the tip, or beside the shaft, covers no point of it."""
+        self.heads.append(np.array([start, end], dtype=float))
 
     def layout(self, ax: Any) -> list[Placement]:
         """The best place of every label in `ax` (display pixels), without drawing anything."""
@@ -238,6 +255,7 @@ class Layout:
         self.obstacles, self.weights = _sample(board.obstacles, ax.transData, SAMPLE * self.px)
         self.unit = _directions()
         self.tips = ax.transData.transform(np.array(board.tips)) if board.tips else np.zeros((0, 2))
+        self.heads = _head_points(board.heads, ax.transData, self.px)
         self.arrows = _arrow_segments(board.obstacles, ax.transData)
         self.terms = (np.array([ax.transData.transform(a) for a in board.arrows]) if board.arrows
                       else np.zeros((0, 2, 2)))       # a polygon's arrows (display), for `_not_own`
@@ -250,7 +268,9 @@ class Layout:
         self.outline_bars = np.array([b for (line, weight, _), b in zip(board.obstacles, bars)
                                       if 1.0 <= weight < 3.0 and len(line) >= 2
                                       for _ in range(len(line) - 1)], dtype=bool)
-        self.drawn, self.drawn_line, self.drawn_owner = _drawn_lines(board.obstacles, owners, ax.transData)
+        widths = board.widths if len(board.widths) == len(board.obstacles) else [0.0] * len(board.obstacles)
+        self.drawn, self.drawn_line, self.drawn_owner, self.drawn_width = _drawn_lines(
+            board.obstacles, owners, ax.transData, widths)
         self.areas = [(owner, Path(ax.transData.transform(poly))) for owner, poly in board.areas
                       if len(poly) >= 3]
         dots = [lb.anchor for lb in self.labels if lb.gid.startswith(DOT_GIDS)]
@@ -370,9 +390,16 @@ class Layout:
         ax0, ay0, ax1, ay1 = self.axes
         inside = (np.clip(np.minimum(boxes[:, 2], ax1) - np.maximum(boxes[:, 0], ax0), 0, None) *
                   np.clip(np.minimum(boxes[:, 3], ay1) - np.maximum(boxes[:, 1], ay0), 0, None))
-        cost = OUTSIDE * (1 - inside / area) + DISTANCE * dist
+        # a mechanism vector's value may reach out of the axes, which then grow to hold it
+        # (`figure._place_labels`), rather than go far along a leader: C5-1.3's v_ar,E, a short
+        # arrow by the frame's edge, with the ground below it (twenty-seventh round (f))
+        outside = OUTSIDE_VALUE if label.shaft is not None else OUTSIDE
+        cost = outside * (1 - inside / area) + DISTANCE * dist
+        if label.shaft is not None:             # ... and sits by its arrow, on no leader where it can
+            cost += LEADER_VALUE * (dist >= LEADER)
         cost += COVER * _covered(boxes, self.obstacles, self.weights, OBSTACLE_PAD * self.px)
         cost += OVERLAP * _covered(boxes, self.tips, np.ones(len(self.tips)), TIP * self.px)
+        cost += OVERLAP * np.minimum(_covered(boxes, self.heads, np.ones(len(self.heads)), 0.0), 1.0)
         if label.prefer is not None and np.linalg.norm(label.prefer) > 0:
             p = label.prefer / np.linalg.norm(label.prefer)
             cost += PREFER * (1 - dirs @ p)
@@ -466,36 +493,63 @@ class Layout:
         portador in planet 2, C5-1.3's v_E on the support; twenty-first round (d)). Labels of
         points and centres are not weighed: they sit on their point, wherever it is."""
         owner = label_owner(label.gid)
-        others = [path for body, path in self.areas if owner is not None and body != owner]
+        others = [path for body, path in self.areas if owner is not None and owner not in body.split("+")]
         return AREA * covered_part(boxes, others) if others else np.zeros(len(boxes))
 
     def _lines_under(self, label: Label, boxes: np.ndarray) -> np.ndarray:
-        """What a label other than a point's costs for lying across drawn lines (a body's
-        outline, bar, rim or hatching; a construction line: `avoid` weights in `DRAWN`) that
-        run through its box grown by `OBSTACLE_PAD` (its text and `PAD`, 4 points: half a
-        bar's width, so that no bar's stroke touches it), counted exactly, each line once
-        (`_lines_in_boxes`). One rule, two weights, by what the line does to the label:
-        another body's line through a body's name or a vector's value reads it as that
-        body's, as much as lying on its area: `AREA` each (C5-E.6's v_P on the front wheel's
-        rim, twenty-fourth round (b); C5-1.2's v_J∈OJ across the left wheel's rim, C5-2.2's
-        v_O on the chassis' bar, C5-1.4's names across the planets, twenty-fourth round (f));
-        any other line (its own body's: a name across its own wheel's rim, C5-E.5's "R
-        erradioko gurpila"; hatching; a dash-dot construction line, C5-1.1) only makes it
-        hard to read: `LINE_OVER` each. Inside a disc or beside it is free. A value's box
-        crossed by another body's outline paid twice before, `RIM` and `LINE_OVER`: two rules
-        for one fault (twenty-seventh round (c)). Sampling the lines (`COVER`) weighs a line
-        by its length inside the box, a few points for a rim crossed at its edge, less than
-        a step away from the anchor."""
-        if label.gid.startswith(POINT_GIDS) or not len(self.drawn):
+        """What a label costs for lying across drawn lines (a body's outline, bar, rim or
+        hatching; a construction line: `avoid` weights in `DRAWN`) that run through its box
+        grown by `OBSTACLE_PAD` (its text and `PAD`, 4 points: half a bar's width, so that no
+        bar's stroke touches it), counted exactly, each line once (`_lines_in_boxes`). One
+        rule, two weights, by what the line does to the label: another body's line through a
+        body's name or a vector's value reads it as that body's, as much as lying on its
+        area: `AREA` each (C5-E.6's v_P on the front wheel's rim, twenty-fourth round (b);
+        C5-1.2's v_J∈OJ across the left wheel's rim, C5-2.2's v_O on the chassis' bar,
+        C5-1.4's names across the planets, twenty-fourth round (f)); any other line (its own
+        body's: a name across its own wheel's rim, C5-E.5's "R erradioko gurpila"; hatching;
+        a dash-dot construction line, C5-1.1) only makes it hard to read: `LINE_OVER` each.
+        Inside a disc or beside it is free. A value's box crossed by another body's outline
+        paid twice before, `RIM` and `LINE_OVER`: two rules for one fault (twenty-seventh
+        round (c)). Sampling the lines (`COVER`) weighs a line by its length inside the box,
+        a few points for a rim crossed at its edge, less than a step away from the anchor.
+
+        A wide bar (its drawn width, `LabelBoard.avoid`) keeps a vector's value or a centre's
+        label `BAR_CLEAR` points off its edge, not its centre line: touching a bar's stroke,
+        it read as written over it (C5-1.2's v_J∈OJ on the OJ bar, C5-1.3's I_barra = (12; 24)
+        on the bar; twenty-seventh round (f)). A body's name, set beside its bar or between
+        two strands, keeps the old room. A point's letter pays only for a joint's block edge
+        through it (`_block_edges`)."""
+        if not len(self.drawn):
             return np.zeros(len(boxes))
-        clear = boxes + np.array([-1, -1, 1, 1]) * OBSTACLE_PAD * self.px    # a bar's half width beyond the text
+        if label.gid.startswith(POINT_GIDS):
+            return LINE_OVER * self._block_edges(boxes + np.array([-1, -1, 1, 1]) * OBSTACLE_PAD * self.px)
         owner = label_owner(label.gid)
-        other = ((self.drawn_owner != owner) & (self.drawn_owner != "") if owner is not None
+        blocks = np.array([str(o).startswith(BLOCK) for o in self.drawn_owner], dtype=bool)
+        other = ((self.drawn_owner != owner) & (self.drawn_owner != "") & ~blocks if owner is not None
                  else np.zeros(len(self.drawn), bool))
-        cost = LINE_OVER * _lines_in_boxes(self.drawn[~other], self.drawn_line[~other], clear)
-        if other.any():
-            cost += AREA * _lines_in_boxes(self.drawn[other], self.drawn_line[other], clear)
+        named = label.gid.startswith("body:")          # a body's name may sit close by a bar
+        cost = np.zeros(len(boxes))
+        for width in np.unique(self.drawn_width):     # a wide bar keeps `BAR_CLEAR` off its edge
+            pad = OBSTACLE_PAD if named else max(OBSTACLE_PAD, width / 2 + BAR_CLEAR - PAD)
+            grown = boxes + np.array([-1, -1, 1, 1]) * pad * self.px
+            at = self.drawn_width == width
+            mine, theirs = at & ~other, at & other
+            if mine.any():
+                cost += LINE_OVER * _lines_in_boxes(self.drawn[mine], self.drawn_line[mine], grown)
+            if theirs.any():
+                cost += AREA * _lines_in_boxes(self.drawn[theirs], self.drawn_line[theirs], grown)
         return cost
+
+    def _block_edges(self, boxes: np.ndarray) -> np.ndarray:
+        """For each box of a point's letter, how many joints' blocks (a slider's: `BLOCK`
+        owners) have their outline through it. A point's letter sits by its dot over any line
+        but a block's edge: across it, half on the block and half off, the letter read as
+        hidden by the block (001's A on the slider; issue 30, twenty-seventh round (f)); on
+        the block, clear of its edge, or off it, it is read whole."""
+        blocks = np.array([str(o).startswith(BLOCK) for o in self.drawn_owner], dtype=bool)
+        if not blocks.any():
+            return np.zeros(len(boxes))
+        return _lines_in_boxes(self.drawn[blocks], self.drawn_line[blocks], boxes)
 
     def _leader_over(self, label: Label, cand: tuple) -> np.ndarray:
         """What the way from a label's anchor to its box costs for crossing what is drawn.
@@ -660,6 +714,20 @@ def covered_part(boxes: np.ndarray, paths: list) -> np.ndarray:
     return inside.reshape(len(boxes), -1).mean(axis=1)
 
 
+def _head_points(heads: list, transform: Any, px: float) -> np.ndarray:
+    """The points (display) of the mechanism's arrows' heads (`LabelBoard.head`): each tip and
+    the points `HEAD` back from it along its shaft (at most the arrow's length)."""
+    out = []
+    for start, end in heads:
+        a, b = transform.transform(np.asarray([start, end], dtype=float))
+        length = float(np.linalg.norm(b - a))
+        if length <= 0:
+            continue
+        u = (b - a) / length
+        out += [b - min(t * px, length) * u for t in HEAD]
+    return np.array(out) if out else np.zeros((0, 2))
+
+
 def _directions() -> np.ndarray:
     t = 2 * math.pi * np.arange(DIRECTIONS) / DIRECTIONS
     return np.column_stack([np.cos(t), np.sin(t)])
@@ -809,20 +877,24 @@ def _lines_in_boxes(segs: np.ndarray, line: np.ndarray, boxes: np.ndarray) -> np
     return np.logical_or.reduceat(hits, first, axis=1).sum(axis=1).astype(float)
 
 
-def _drawn_lines(obstacles: list, owners: list, transform: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def _drawn_lines(obstacles: list, owners: list, transform: Any,
+                 widths: Optional[list] = None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """The segments (M, 2, 2, display) of the drawn lines whose `avoid` weight is in `DRAWN`
-    (outlines, bars, rims, hatching, construction lines), the line (M,) each belongs to and
-    its body (M,: "" for none), for `Layout._lines_under`."""
-    segs, lines, own = [], [], []
-    for k, ((line, weight, _), owner) in enumerate(zip(obstacles, owners)):
+    (outlines, bars, rims, hatching, construction lines), the line (M,) each belongs to, its
+    body (M,: "" for none) and its drawn width (M, points: 0 for a thin line), for
+    `Layout._lines_under`."""
+    segs, lines, own, wide = [], [], [], []
+    widths = widths if widths is not None else [0.0] * len(obstacles)
+    for k, ((line, weight, _), owner, width) in enumerate(zip(obstacles, owners, widths)):
         if DRAWN[0] <= weight < DRAWN[1] and len(line) >= 2:
             q = transform.transform(line)
             segs.append(np.stack([q[:-1], q[1:]], axis=1))
             lines += [k] * (len(q) - 1)
             own += [owner] * (len(q) - 1)
+            wide += [width] * (len(q) - 1)
     if not segs:
-        return np.zeros((0, 2, 2)), np.zeros(0, int), np.zeros(0, dtype=object)
-    return np.concatenate(segs), np.array(lines), np.array(own, dtype=object)
+        return np.zeros((0, 2, 2)), np.zeros(0, int), np.zeros(0, dtype=object), np.zeros(0)
+    return np.concatenate(segs), np.array(lines), np.array(own, dtype=object), np.array(wide, dtype=float)
 
 
 def _crossing(p: np.ndarray, qs: np.ndarray, starts: np.ndarray, ends: np.ndarray) -> np.ndarray:

@@ -17,10 +17,12 @@ from matplotlib.backend_bases import GraphicsContextBase
 from matplotlib.lines import Line2D
 from matplotlib.markers import MarkerStyle
 from matplotlib.patches import Annulus, Circle, FancyArrowPatch, Polygon
+from matplotlib.patheffects import withStroke
 from matplotlib.transforms import offset_copy
 
 from ..joints.symbols import Mark
 from .canvas import Canvas
+from .labels import BLOCK
 from .geometry import perpendicular, unit
 from .style import LABEL_SIZE
 
@@ -40,6 +42,9 @@ def paint_mark(cv: Canvas, m: Mark) -> Optional[Any]:
         return None
     if m.kind == "clear" and m.group.startswith("area:"):
         cv.board.area(m.group.removeprefix("area:"), pts)
+        return None
+    if m.kind == "clear" and m.group.startswith("head:"):
+        cv.board.head(*pts[:2])
         return None
     if m.kind != "clear":
         drawn = artist(m)
@@ -86,11 +91,12 @@ def _avoid(cv: Canvas, m: Mark, pts: np.ndarray) -> None:
         role, _, owner = (m.group or "").partition(":")
         outline = role in ("outline", "bar")
         cv.board.avoid(*pts, weight=m.avoid, radius=m.radius, owner=owner if outline else "",
-                       bar=role == "bar")
+                       bar=role == "bar", width=m.width)
     elif m.kind == "dot":
         cv.board.avoid(pts[0], weight=m.avoid, radius=m.radius)
-    else:
-        cv.board.avoid(*pts, pts[0], weight=m.avoid)
+    else:                                     # a joint's block is its symbol's (`labels.BLOCK`)
+        block = m.kind == "polygon" and m.gid.startswith("joint:")
+        cv.board.avoid(*pts, pts[0], weight=m.avoid, owner=f"{BLOCK}{m.gid}" if block else "")
 
 
 def _colour(c: str) -> Any:
@@ -173,8 +179,11 @@ def _ring(m: Mark, pts: np.ndarray) -> Annulus:
 def _arrow(m: Mark, pts: np.ndarray) -> Optional[FancyArrowPatch]:
     if not np.linalg.norm(pts[1] - pts[0]) > 0:
         return None                                   # a zero vector: no arrow
-    return FancyArrowPatch(tuple(pts[0]), tuple(pts[1]), arrowstyle=m.head, mutation_scale=m.size,
-                           lw=m.width, color=m.colour, shrinkA=0, shrinkB=0, zorder=m.zorder)
+    arrow = FancyArrowPatch(tuple(pts[0]), tuple(pts[1]), arrowstyle=m.head, mutation_scale=m.size,
+                            lw=m.width, color=m.colour, shrinkA=0, shrinkB=0, zorder=m.zorder)
+    if m.halo > 0:                                    # its white casing under it (`Mark.halo`)
+        arrow.set_path_effects([withStroke(linewidth=m.width + 2 * m.halo, foreground="white")])
+    return arrow
 
 
 ARTISTS = {"dot": _dot, "line": _line, "polygon": _polygon, "circle": _circle, "ring": _ring,

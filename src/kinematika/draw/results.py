@@ -86,7 +86,18 @@ def vector_targets(sol: Any, options: DrawOptions, kind: str,
         shown = [] if default else [(q.target, q.relative_to if any(q is a for a in arrows) else None)
                                     for q in model.questions if QUESTIONS[q.kind].about == "point"]
         shown = shown or _moving_points(sol)
+        if kind == "velocity" and not default:
+            shown += _given(model)
     return _unique(shown)
+
+
+def _given(model: Any) -> list:
+    """The velocities the data give (a driver's point velocity relative to the frame): a figure
+    that draws velocities draws them beside those found, as the notes draw the datum the
+    solution starts from (C5-E.4's chassis at v, of which only v_P = 0 was drawn; C5-2.1's
+    v_F; issue 30, twenty-seventh round (f))."""
+    return [(d.point, None) for d in model.drivers
+            if d.kind == "velocity" and d.relative_to in (None, model.frame)]
 
 
 def _beside(model: Any, asked: list, kind: str) -> list:
@@ -94,10 +105,7 @@ def _beside(model: Any, asked: list, kind: str) -> list:
     relative one is asked (a relative velocity is read against the absolute), and, for
     velocities, the data the model gives (the tractor's v_F)."""
     out = [(ref, None) for ref, rel in asked if rel not in (None, model.frame)]
-    if kind == "velocity":
-        out += [(d.point, None) for d in model.drivers
-                if d.kind == "velocity" and d.relative_to in (None, model.frame)]
-    return out
+    return out + (_given(model) if kind == "velocity" else [])
 
 
 def _decompositions(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:

@@ -41,6 +41,8 @@ class ShapeView:
     material_inside: bool = True           # ground circle: a drum (True) or a cavity (False)
     arc: Optional[tuple[float, float]] = None  # circle: the part its body is (radians on the page,
                                            # from → to counter-clockwise; a semicylinder)
+    apart: bool = False                    # a moving circle in another plane than the ground it
+                                           # crosses (`build._mark_other_planes`): drawn dashed
 
     def centre(self) -> Vec:
         """A circle's centre (the scene sets it for every circle)."""

@@ -22,6 +22,7 @@ from .style import KIND_COLOURS, LONGEST, SHORTEST
 ZERO = 1e-9          # relative to the largest vector of the kind
 SIDE = 4.0           # points between arrows along one line from one point
 SIDE_ANGLE = 6.0     # degrees: arrows closer than this in direction are side by side
+HALO = 1.6           # points of white casing each side of an arrow's stroke (`arrow_mark`)
 
 
 @dataclass
@@ -67,17 +68,51 @@ def arrow_for(view: VectorView, largest: float, size: float, origin=None, value=
     return Arrow(view, origin, origin + value * factor, enlarged)
 
 
-def arrows(vectors: list[VectorView], size: float, bars: Optional[list] = None) -> list[Arrow]:
+def arrows(vectors: list[VectorView], size: float, bars: Optional[list] = None,
+           grounds: Optional[list] = None) -> list[Arrow]:
     """Every vector's arrow, each kind to its own scale (the longest of a kind is `LONGEST` of
     the drawing size); an acceleration that would lie along a bar from its point (a
     centripetal acceleration along its crank) is drawn ending at the point instead, beyond
     the bar, where it can be seen. A velocity always starts at its point, as the notes draw
     it (issue 30, sixteenth round (f): C5-2.2's v_O and v_P, along the chassis, ended at
     their points and read as velocities of other points): along a bar it is drawn over the
-    bar, above it (`arrow_mark`'s zorder)."""
+    bar, above it (`arrow_mark`'s zorder). An arrow that would run from its point into the
+    ground (across one of `grounds`) is drawn ending at its point instead (`off_ground`)."""
     largest = arrow_scales(vectors)
     out = [arrow_for(v, largest[v.kind], size) for v in vectors]
-    return [off_bars(a, bars or [], size) if a.view.kind == "acceleration" else a for a in out]
+    out = [off_bars(a, bars or [], size) if a.view.kind == "acceleration" else a for a in out]
+    return [off_ground(a, grounds or [], bars or [], size) for a in out]
+
+
+def off_ground(arrow: Arrow, grounds: list, bars: list, size: float) -> Arrow:
+    """`arrow` turned to end at its point when, starting there, it would cross one of the
+    ground's edges (`grounds`: each by its two ends, `figure.grounds`) into the ground's
+    material, and ending there it would neither cross one nor run along a bar: an arrow
+    through the hatching, its value set under the ground, reads as no part of the mechanism
+    (C5-E.3's v_B, the rod's end down into the track; issue 30, twenty-seventh round (f)). As
+    it is otherwise: a velocity starts at its point wherever it can."""
+    if not arrow.drawn or arrow.tip_at_point or not _crosses(arrow.start, arrow.end, grounds, size):
+        return arrow
+    tail = 2 * arrow.start - arrow.end
+    if _crosses(tail, arrow.start, grounds, size) or _along(arrow.start, unit(tail - arrow.start), bars, size):
+        return arrow
+    return Arrow(arrow.view, tail, arrow.start.copy(), arrow.enlarged, arrow.zero, tip_at_point=True)
+
+
+def _crosses(p: np.ndarray, q: np.ndarray, edges: list, size: float) -> bool:
+    """Whether the segment pq crosses one of `edges` (their two ends), p clear of it (a point
+    on the ground starts on it)."""
+    tol = 1e-6 * size
+    for a, b in edges:
+        d = unit(b - a)
+        n = np.array([-d[1], d[0]])
+        sp, sq = float((p - a) @ n), float((q - a) @ n)
+        if abs(sp) <= tol or abs(sq) <= tol or sp * sq >= 0:
+            continue
+        x = p + (q - p) * sp / (sp - sq)                  # where pq meets the edge's line
+        if -tol <= float((x - a) @ d) <= float(np.linalg.norm(b - a)) + tol:
+            return True
+    return False
 
 
 def off_bars(arrow: Arrow, bars: list, size: float) -> Arrow:
@@ -128,9 +163,13 @@ def side_shifts(drawn: list[Arrow], size: float) -> list[float]:
 
 def arrow_mark(arrow: Arrow, gid: str, shift: float = 0.0) -> dict:
     """The arrow of `arrow` as a mark's fields, in its kind's colour (velocities above
-    accelerations), set `shift` points sideways."""
+    accelerations), set `shift` points sideways, cased in white (`HALO`): a velocity starts
+    at its point and may run along the body's bar or strand (C5-1.3's v_E along the bar and
+    through the sleeve, C5-1.5's v_K and v_T2 on their strands, C5-2.2's v_O and v_P on the
+    chassis; issue 30, twenty-seventh round (f)); the casing parts the arrow from the bar
+    under it, as a draughtsman leaves a gap, and keeps both seen."""
     return dict(head="-|>", size=15, width=2.2, colour=KIND_COLOURS[arrow.view.kind],
-                zorder=10 if arrow.view.kind == "velocity" else 9, gid=gid, shift=shift)
+                zorder=10 if arrow.view.kind == "velocity" else 9, gid=gid, shift=shift, halo=HALO)
 
 
 def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
@@ -158,6 +197,7 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
                 **arrow_mark(arrow, v.key, shift))          # of no length: none drawn
         if arrow.drawn:
             ctx.avoid(arrow.start, arrow.end, weight=3.0)
+            ctx.add("clear", [arrow.start, arrow.end], avoid=0.0, zorder=0, group=f"head:{v.key}")
             free, away = (arrow.start, arrow.start - arrow.end) if arrow.tip_at_point else \
                 (arrow.end, arrow.end - arrow.start)                # the label beyond the free end
             ctx.label(free, text, colour, 1, v.key, away, layer=layer, group=group, about=said,

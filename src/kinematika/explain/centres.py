@@ -128,7 +128,9 @@ def construction(ctx: Ctx, made: dict, chosen: list) -> list[tuple[tuple, tuple]
     "the perpendicular to v_W through W"), the same for a centre where such a line meets a
     joint's normal (C5-1.2's I_OJ on the line through I_OQ and O, which stopped past K1; the
     normal is drawn on to its centre by `draw.results._normals`); from velocities, through each witness point,
-    perpendicular to its velocity. A sentence that says "these lines meet" there, over a
+    perpendicular to its velocity; from a body's ω and one point's velocity (`_field`), through
+    that point; from two parallel velocities (`_parallel`, the proportional construction),
+    through both points. A sentence that says "these lines meet" there, over a
     figure with the lines stopping short of the ring, left the reader to draw them (issue 30,
     nineteenth round (d): C5-1.1's strands' lines and I_pulley)."""
     out: list[tuple[tuple, tuple]] = []
@@ -140,6 +142,14 @@ def construction(ctx: Ctx, made: dict, chosen: list) -> list[tuple[tuple, tuple]
             out += [(note.pair, tuple(c["point"])) for line in note.lines for c in line
                     if c.get("point") is not None]
         elif note.how == "velocities" and len(note.witnesses) >= 2:
+            out += [(note.pair, tuple(ctx.pos(p))) for p, *_ in note.witnesses]
+        elif note.how == "proportional" and note.witnesses:      # (name, place, velocity) of each
+            out += [(note.pair, tuple(where)) for _, where, _ in note.witnesses]
+        elif note.how in ("field", "rate", "parallel") and note.witnesses:
+            # from ω and one point's velocity: on the perpendicular to v_Q through Q, at
+            # |v_Q|/|ω|; from two parallel velocities: on the line through their points — the
+            # line the text puts it on, drawn from each point (a bare ring, far off, was all
+            # C5-1.6's, C5-E.5's and C5-E.6's figures showed: twenty-seventh round (f))
             out += [(note.pair, tuple(ctx.pos(p))) for p, *_ in note.witnesses]
     return out
 

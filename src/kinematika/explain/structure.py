@@ -334,8 +334,15 @@ def _arrows_drawn(ctx: Ctx, options: dict) -> dict:
     # caption then promises no magnitude
     moduli = int(all(not v.text.startswith("≈") for v in shown))
     centre = _centre_of(ctx, [v.ref for v in shown]) if arrows == 3 else None
+    # beside arrows, a point whose velocity is zero has "v_P = 0" written by it: said after
+    # them, with the body whose instant centre it is (C5-E.4's P, beside the given v_U drawn
+    # since the twenty-seventh round (f))
+    still = [v for v in drawn if not any(v is m for m in moving)] if moving else []
+    at = _centre_of(ctx, [v.ref for v in still]) if still else None
+    rest = msg("fig.rest", points=Names([_arrow_point(ctx, v.ref) for v in still]), count=len(still),
+               centre=msg("fig.rest_centre", body=Name(at, "body")) if at else "") if still else ""
     return {"arrows": arrows, "points": points, "moduli": moduli,
-            "centre": msg("fig.rest_centre", body=Name(centre, "body")) if centre else ""}
+            "centre": msg("fig.rest_centre", body=Name(centre, "body")) if centre else "", "rest": rest}
 
 
 def _centre_of(ctx: Ctx, refs: list[str]) -> Optional[str]:
@@ -431,7 +438,8 @@ def _normal_lines(ctx: Ctx, joints: Optional[set] = None) -> list[str]:
 
 def mechanism_figure(ctx: Ctx) -> Figure:
     """The mechanism at the instant: bodies as lines between their points, shapes, labels."""
-    fig = Figure(msg("fig.mechanism", dim=2, arrows=0, points=Names([])), unit="len", sample=ctx.symbolic)
+    fig = Figure(msg("fig.mechanism", dim=2, arrows=0, points=Names([]), centre="", rest=""), unit="len",
+                 sample=ctx.symbolic)
     pos = {name: ctx.num(p) for name, p in ctx.inst.points.items()}
     for name, carrier in ctx.model.bodies.items():
         pts = [pos[p] for p in carrier.points]

@@ -241,6 +241,14 @@ class DrawContext(Protocol):
         """Closed outlines that fixed guides stop short of (moving wheels and cams)."""
         ...
 
+    def hub(self, p: np.ndarray) -> float:
+        """The radius of the largest moving disc turning about `p` (0: none)."""
+        ...
+
+    def crowded(self, pts: Any, hub: np.ndarray) -> int:
+        """How many of `pts` lie on a moving body (a disc not centred at `hub`, a bar)."""
+        ...
+
 
 class Mechanism(Protocol):
     """The Python builder (`model.builder.Mechanism`): a joint of any kind added by name."""

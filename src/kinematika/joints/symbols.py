@@ -32,6 +32,8 @@ Vec = np.ndarray
 
 PIN_SIZE = 7.5              # marker size of a revolute pin, points
 SUPPORT = 0.045             # size of a fixed-pivot symbol (of the drawing's size)
+STEM_GAP = 0.4              # a wheel's axle: its support's apex beyond the rim (of the symbol's size)
+HIDDEN = (3.0, 2.0)         # the stem's hidden part, inside the wheel: dashes, in line widths
 BLOCK = (0.11, 0.06)        # slider block: length and height
 SLOT_WIDTH = 0.035
 HATCH_BAND = 0.03
@@ -47,7 +49,8 @@ class Mark:
     "line" (a polyline), "dot" (a marker of `size` points at `points[0]`, its `shape` "o",
     "D", "X" or "P"), "circle" (centre `points[0]`, radius `r` in model units), "ring" (the
     band between radii `r - band` and `r`), "arrow" (from `points[0]` to `points[1]`, its
-    `head` "-|>" or "<|-|>" of `size` points, set `shift` points sideways), "text" (`text` at
+    `head` "-|>" or "<|-|>" of `size` points, set `shift` points sideways, cased in white
+    `halo` points beyond its stroke so that it stays seen on a bar it runs along), "text" (`text` at
     `points[0]`, placed by the painter near it, towards `prefer` when given, clear of the
     others in order of `priority`; `side` is a good side for a painter that places labels
     without weighing what is drawn, such as the page's) and "clear" (nothing painted: a polyline that labels keep
@@ -84,6 +87,7 @@ class Mark:
     shape: str = "o"                    # a dot's marker
     head: str = ""                      # an arrow's heads
     shift: float = 0.0                  # an arrow's sideways shift, points
+    halo: float = 0.0                   # an arrow's white casing, points beyond its stroke on each side
     text: str = ""                      # a text's words (matplotlib mathtext)
     prefer: Optional[Vec] = None        # a text's preferred direction from its anchor
     side: Optional[Vec] = None          # where it goes for a painter that does not weigh the drawing
@@ -154,13 +158,44 @@ def pin(view: JointView, ctx: DrawContext, centre_dot: bool = False, body: Any =
 
 def support(p: Vec, ctx: DrawContext) -> list[Mark]:
     """A fixed pivot: a triangle from the pin to a hatched base, below the pin (in a planar
-    model, above it when the pin is clearly above the rest of the mechanism: it hangs)."""
+    model, above it when the pin is clearly above the rest of the mechanism: it hangs).
+
+    A pivot that is a moving wheel's axle (`DrawContext.hub`: a disc turning about it) has its
+    support outside the wheel, on a stem from the pin (dashed across the disc: hidden behind
+    it), on the first side
+    (below or above as said, the other, right, left) where it lies on no other moving body:
+    a support inside the wheel read as the wheel welded to the ground (C5-1.4's sun, turning
+    at 7ω, and the carrier over the one support at O), and C5-1.5's upper pulleys as held
+    inside by a piece of ground, with no ceiling to hang from (issue 30, twenty-seventh round
+    (f))."""
     p = np.asarray(p, dtype=float)
     h = SUPPORT * ctx.size
     d = p - ctx.centroid()
     hanging = ctx.dim == 2 and d[1] > 0.3 * np.linalg.norm(d) and d[1] > 1e-9
     down = np.array([0.0, 1.0]) if hanging else np.array([0.0, -1.0])     # 3D: the vertical
-    side = np.array([1.0, 0.0])
+    hub = ctx.hub(p) if ctx.dim == 2 and hasattr(ctx, "hub") else 0.0
+    if hub <= 0:
+        return _support_at(p, down, h)
+    reach = hub + STEM_GAP * h
+    sides = [down, -down, np.array([1.0, 0.0]), np.array([-1.0, 0.0])]
+
+    def lying(u: Vec) -> int:                # the support's points on other moving bodies
+        across = perpendicular(u)
+        pts = [p + u * (reach + t * h) + s * h * across for t in (0.0, 0.5, 1.0, 1.5) for s in (-1.0, 0.0, 1.0)]
+        return ctx.crowded(pts, p)
+
+    u = min(sides, key=lambda u: (lying(u), next(i for i, v in enumerate(sides) if v is u)))
+    apex, rim = p + reach * u, p + hub * u
+    # the stem: hidden inside the wheel (dashed, as a draughtsman draws a hidden edge), seen beyond it
+    hidden = Mark("line", np.array([p, rim]), "ground", width=1.2, dash=HIDDEN, zorder=1, gid="ground:axle",
+                  avoid=0.3)                # a faint hidden line: a label may lie over it
+    stem = Mark("line", np.array([rim, apex]), "ground", width=2.5, zorder=1, gid="ground:axle")
+    return [hidden, stem] + _support_at(apex, u, h)
+
+
+def _support_at(p: Vec, down: Vec, h: float) -> list[Mark]:
+    """A fixed pivot's triangle from `p` to a hatched base `h` further along `down`."""
+    side = perpendicular(down)
     base = p + down * h
     tri = np.array([p, base - 0.75 * h * side, base + 0.75 * h * side])
     band = 0.55 * h

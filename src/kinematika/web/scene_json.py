@@ -102,7 +102,7 @@ def mark_data(m: Mark, lift: Any = None) -> dict[str, Any]:
              "r": m.r or None, "band": m.band or None, "cap": m.cap or None, "join": m.join or None,
              "shape": m.shape if m.kind == "dot" else None,
              "outline": marker_outline(m.shape) if m.kind == "dot" else None, "head": m.head or None,
-             "shift": m.shift or None, "id": m.gid or None, "group": m.group or None,
+             "shift": m.shift or None, "halo": m.halo or None, "id": m.gid or None, "group": m.group or None,
              "layer": m.layer or None, "still": m.still or None}
     if m.kind == "text":
         extra.update(text=runs(m.text), priority=m.priority, weight=m.weight, style=m.style,

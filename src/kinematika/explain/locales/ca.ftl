@@ -141,6 +141,10 @@ fig-own_drag = la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
     } i la seva velocitat d’arrossegament ({ $sym })
+fig-rest = ; { $count ->
+        [one] { $points } té velocitat nul·la en aquest instant{ $centre }, escrita al costat
+       *[other] { $points } tenen velocitat nul·la en aquest instant, escrita al costat
+    }
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}
@@ -177,7 +181,7 @@ fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
             [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
         }
-    }; els sòlids estan numerats.
+    }{ $rest }; els sòlids estan numerats.
 fig-rest_centre = {" "}(és el CIR { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -218,7 +222,7 @@ fig-mechanism_named = El mecanisme en aquest instant, a escala{ $dim ->
             [2] {", amb els seus mòduls, en "}{ $unit }/s
            *[other] {", amb els seus mòduls"}
         }
-    }.
+    }{ $rest }.
 fig-at_pole = { $count ->
     [one] { $images } és al pol o, ja que { $zero }.
    *[other] { $images } són al pol o, ja que { $zero }.

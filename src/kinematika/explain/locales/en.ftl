@@ -108,6 +108,10 @@ fig-arrow-velocity = the velocity of { $point }
 fig-arrow-drag = the drag velocity ({ $sym })
 fig-arrow-relative = the relative velocity ({ $sym })
 fig-own_drag = the velocity of { $point } and its drag velocity ({ $sym })
+fig-rest = ; { $count ->
+        [one] { $points } has zero velocity at this instant{ $centre }, written beside it
+       *[other] { $points } have zero velocity at this instant, written beside them
+    }
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}
@@ -138,7 +142,7 @@ fig-mechanism = The mechanism at this instant, to scale{ $dim ->
             [2] {", with their magnitudes, in "}{ $unit }/s
            *[other] {", with their magnitudes"}
         }
-    }; the bodies are numbered.
+    }{ $rest }; the bodies are numbered.
 fig-rest_centre = {" "}(it is the instant centre of { $body })
 fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
@@ -170,7 +174,7 @@ fig-mechanism_named = The mechanism at this instant, to scale{ $dim ->
             [2] {", with their magnitudes, in "}{ $unit }/s
            *[other] {", with their magnitudes"}
         }
-    }.
+    }{ $rest }.
 fig-at_pole = { $count ->
     [one] { $images } is at the pole o, since { $zero }.
    *[other] { $images } are at the pole o, since { $zero }.

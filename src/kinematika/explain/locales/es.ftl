@@ -114,6 +114,10 @@ fig-arrow-velocity = la velocidad de { $point }
 fig-arrow-drag = la velocidad de arrastre ({ $sym })
 fig-arrow-relative = la velocidad relativa ({ $sym })
 fig-own_drag = la velocidad de { $point } y su velocidad de arrastre ({ $sym })
+fig-rest = ; { $count ->
+        [one] { $points } tiene velocidad nula en este instante{ $centre }, escrita a su lado
+       *[other] { $points } tienen velocidad nula en este instante, escrita a su lado
+    }
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}
@@ -144,7 +148,7 @@ fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
             [2] {", con sus módulos, en "}{ $unit }/s
            *[other] {", con sus módulos"}
         }
-    }; los sólidos están numerados.
+    }{ $rest }; los sólidos están numerados.
 fig-rest_centre = {" "}(es el CIR de { $body })
 fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
@@ -176,7 +180,7 @@ fig-mechanism_named = El mecanismo en este instante, a escala{ $dim ->
             [2] {", con sus módulos, en "}{ $unit }/s
            *[other] {", con sus módulos"}
         }
-    }.
+    }{ $rest }.
 fig-at_pole = { $count ->
     [one] { $images } está en el polo o, ya que { $zero }.
    *[other] { $images } están en el polo o, ya que { $zero }.

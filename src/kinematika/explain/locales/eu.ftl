@@ -108,6 +108,10 @@ fig-arrow-velocity = { $point } puntuaren abiadura
 fig-arrow-drag = arrastre-abiadura ({ $sym })
 fig-arrow-relative = abiadura erlatiboa ({ $sym })
 fig-own_drag = { $point } puntuaren abiadura eta arrastre-abiadura ({ $sym })
+fig-rest = ; { $count ->
+        [one] { $points } puntuaren abiadura nulua da une honetan{ $centre }, ondoan idatzita
+       *[other] { $points } puntuen abiadura nulua da une honetan, ondoan idatzita
+    }
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
@@ -138,7 +142,7 @@ fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
             [2] {", beren moduluekin ("}{ $unit }/s-tan)
            *[other] {", beren moduluekin"}
         }
-    }; solidoak zenbakituta daude.
+    }{ $rest }; solidoak zenbakituta daude.
 fig-rest_centre = {" "}({ $body } solidoaren biraketa-zentro instantaneoa da)
 fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
@@ -170,7 +174,7 @@ fig-mechanism_named = Mekanismoa une honetan, eskalan{ $dim ->
             [2] {", beren moduluekin ("}{ $unit }/s-tan)
            *[other] {", beren moduluekin"}
         }
-    }.
+    }{ $rest }.
 fig-at_pole = { $count ->
     [one] { $images } o poloan dago, { $zero } baita.
    *[other] { $images } o poloan daude, { $zero } baita.

@@ -256,13 +256,18 @@ export class Figure {
   }
 
   /** An arrow from `start` to `end` with its heads (`-|>` or `<|-|>`, of its size in points),
-   * set its `shift` (points) sideways. */
+   * set its `shift` (points) sideways; under it, its white casing `halo` points wider on each
+   * side (class "casing"), when it has one. */
   arrow(m, start, end, parent) {
     const g = el("g", { class: `arrow kind-${m.layer}` }, parent);
-    const paint = { stroke: m.colour, "stroke-width": m.width * PT };
-    el("polyline", { fill: "none", ...paint, "stroke-linecap": "butt" }, g);
-    el("polygon", { fill: m.colour, ...paint }, g);
-    if (m.head === "<|-|>") el("polygon", { fill: m.colour, ...paint }, g);
+    const strokes = m.halo ? [["white", m.width + 2 * m.halo, { class: "casing" }], [m.colour, m.width, {}]]
+      : [[m.colour, m.width, {}]];
+    for (const [colour, width, role] of strokes) {
+      const paint = { stroke: colour, "stroke-width": width * PT, ...role };
+      el("polyline", { fill: "none", ...paint, "stroke-linecap": "butt" }, g);
+      el("polygon", { fill: colour, ...paint }, g);
+      if (m.head === "<|-|>") el("polygon", { fill: colour, ...paint }, g);
+    }
     this.placeArrow(g, m, start, end);
     return g;
   }
@@ -276,11 +281,14 @@ export class Figure {
     const hl = 0.4 * m.size * PT * this.px, hw = 0.2 * m.size * PT * this.px;
     const [a, b] = [add(start, shift), add(end, shift)];
     const head = (tip, dir) => { const back = add(tip, mul(dir, -hl)); return [tip, add(back, mul(n, hw)), add(back, mul(n, -hw))]; };
-    const [line, ...heads] = g.children;
-    const both = m.head === "<|-|>";
-    line.setAttribute("points", poly([both ? add(a, mul(d, hl)) : a, add(b, mul(d, -hl))]));
-    heads[0].setAttribute("points", poly(head(b, d)));
-    if (both) heads[1].setAttribute("points", poly(head(a, mul(d, -1))));
+    const both = m.head === "<|-|>", each = both ? 3 : 2;      // a stroke's line and heads (the casing's, then the arrow's)
+    const parts = [...g.children];
+    for (let i = 0; i + each <= parts.length; i += each) {
+      const [line, ...heads] = parts.slice(i, i + each);
+      line.setAttribute("points", poly([both ? add(a, mul(d, hl)) : a, add(b, mul(d, -hl))]));
+      heads[0].setAttribute("points", poly(head(b, d)));
+      if (both) heads[1].setAttribute("points", poly(head(a, mul(d, -1))));
+    }
   }
 
   /** A label at its anchor, towards its preferred side (up and right by default); one that
