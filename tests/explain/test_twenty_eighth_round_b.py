@@ -60,11 +60,11 @@ def test_the_pulleys_lowest_point_is_p():
 
 def test_the_tricycles_axle_middle_is_p():
     """C5-2.1: the middle of the rear axle, half-way between the wheels' centres C1 = (0, s)
-    and C2 = (0, −s), is P = (0, 0), a point of the chassis."""
+    and C2 = (0, −s), is P = (0, 0), a point of the chassis (Catalan writes (0; 0))."""
     sol, _ = explained("seed_c5_2_1_tricycle")
     assert "P" in sol.model.points and "chassis" in sol.model.carriers("P")
     for lang, said in (("en", "| P | middle of the rear axle | (0, 0) |"),
-                       ("ca", "| P | punt mig de l’eix posterior | (0, 0) |")):
+                       ("ca", "| P | punt mig de l’eix posterior | (0; 0) |")):
         assert said in rendered("seed_c5_2_1_tricycle", lang, drawings=False)
 
 
