@@ -265,7 +265,6 @@ class Figure:
     unit: str = ""                                 # unit of the scale bar (speed, accel, len)
     sample: bool = False                           # drawn at sample values of the symbols
     values: dict = field(default_factory=dict)     # ... namely these (a symbolic model's draw_at)
-    bar: Optional[tuple] = None                    # a symbolic bar's unit: (formula, its drawn number)
     notes: list = field(default_factory=list)      # sentences after the caption (how a label reads)
     layouts: dict = field(default_factory=dict, repr=False, compare=False)   # by the labels' texts
 
