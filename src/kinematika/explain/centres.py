@@ -241,8 +241,9 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
 
 def axle_centres(ctx: Ctx, made: dict, asked: set[frozenset]) -> set[frozenset]:
     """On a page that writes centres relative to the frame (some are asked), the centres of
-    the other bodies the questions ask about (their ω or α relative to the frame) that turn
-    about a fixed axle, a pin on the frame: the notes name them with the rest ("Els CIRs
+    the other bodies whose rates the questions ask relative to the frame (ω, α: a question
+    about a body that `needs_rate`) and that turn about a fixed axle, a pin on the frame:
+    the notes name them with the rest ("Els CIRs
     respecte al terra del portador, de la corona i de la roda central coincideixen amb el
     punt central", C5-1.4), and a page that listed the carrier's and the ring's centres at O
     but not the sun wheel's, whose ω it asks, left the student to wonder why (issue 30,
@@ -251,8 +252,11 @@ def axle_centres(ctx: Ctx, made: dict, asked: set[frozenset]) -> set[frozenset]:
     added: its velocity step says already that its contact is its instant centre."""
     if not any(ctx.frame in key for key in asked):
         return set()
-    bodies = {q.target for q in ctx.model.questions if q.kind in ("omega", "alpha")
-              and isinstance(q.target, str) and (ctx.rel(q.relative_to) or ctx.frame) == ctx.frame}
+    from ..questions import QUESTIONS
+
+    bodies = {q.target for q in ctx.model.questions if QUESTIONS[q.kind].about == "body"
+              and QUESTIONS[q.kind].needs_rate and isinstance(q.target, str)
+              and (ctx.rel(q.relative_to) or ctx.frame) == ctx.frame}
     keys = {frozenset((ctx.frame, b)) for b in bodies if b != ctx.frame}
     return {k for k in keys if k in made and made[k].how == "joint" and made[k].joint_type == "revolute"}
 
