@@ -162,9 +162,10 @@ class Lead:
 class Ann:
     """What is known of a term (seed 001): magnitude M or ?, direction D, ?, ⊥ or ∥ a line.
 
-    `code` is one of "M", "D", "?", "perp", "para", "zero", or "rate": a magnitude that is an
-    unknown rate times its arm (α·JS), the rate shared by several terms of one equation
-    (`shared.share`); `ref` names the line (a segment "AB", or a guide `Msg`) or the formula.
+    `code` is one of "M", "D", "?", "perp", "para" or "zero"; `ref` names the line (a segment
+    "AB", or a guide `Msg`) or a known magnitude's formula (ω²·AB). An unknown magnitude "?"
+    whose rate several terms of one equation share keeps that rate and its arm in `ref`
+    ([α, "·JS"], `shared.share`): the marks row writes "?", the sentence before it the rate.
     """
 
     code: str

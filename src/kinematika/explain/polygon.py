@@ -31,14 +31,17 @@ CROWDED = 3             # images at one point past which a polygon along one lin
 
 def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = False) -> Figure | None:
     """The polygon of all the planar equations of a level ('v' or 'a'), or of one step's
-    (`step`), or None."""
+    (`step`), or None. None too when it would draw a single arrow: a "polygon" of one vector
+    closes nothing and a teacher does not draw it; the equation alone says it all (C5-1.6's
+    v_A = v_O + v_AO with v_O = 0, whose one arrow was its whole velocity polygon; the notes
+    draw no figure there: issue 30, twenty-eighth round (c))."""
     eqs = [e for e in equations if e.level == level]
     if not ctx.planar or not eqs:
         return None
     poly = _Builder(ctx)
     for eq in eqs:
         poly.equation(eq)
-    if not poly.arrows:
+    if len(poly.arrows) < 2:
         return None
     key = ("fig.step_v" if level == "v" else "fig.step_a") if step else ("fig.level_v" if level == "v" else "fig.level_a")
     if key == "fig.level_a":                # the caption names only the kinds of terms drawn

@@ -1014,10 +1014,10 @@ class Renderer(ABC):
 
     # annotations and derived values ------------------------------------------------------------
     def ann(self, a: Ann) -> str:
-        """An M/D/? annotation of a term (seed 001): M, D or ?, a magnitude's formula (ω·AB), or
-        the direction ⊥ or ∥ a line."""
-        if a.code == "rate":            # an unknown rate times its arm (α·JS), shared by terms
-            return self.inline(a.ref)
+        """An M/D/? annotation of a term (seed 001): M, D or ?, a known magnitude's formula
+        (ω²·AB), or the direction ⊥ or ∥ a line. An unknown magnitude is "?" even when it is
+        a shared rate times its arm (α·JS, said in the sentence before the equation): the
+        notes never write a formula over an unknown (twenty-eighth round (c))."""
         if a.code in ("M", "D", "?"):
             if a.code == "M" and a.ref:
                 return self.inline(a.ref)
