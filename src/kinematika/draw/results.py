@@ -29,8 +29,8 @@ def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> N
     velocity and acceleration vectors, instant centres with their Kennedy lines, curvature
     circles, poles, contacts and screw axes."""
     _vectors(scene, sol, options, num)
-    _coincident(scene, sol, options, num)
     _decompositions(scene, sol, options, num)
+    _coincident(scene, sol, options, num)         # after: no composition's parts beside them
     _centres(scene, sol, options, num)
     if options.curvature is not False:
         _curvatures(scene, sol, num, options.lang)

@@ -323,7 +323,7 @@ def coincident_caption(ctx: Ctx, j, name: str, level: str, options: dict) -> dic
     moving = [_drawn_sym(v.ref, level, j) for v in drawn if v.magnitude > 1e-9 * top]
     zeros = [_drawn_sym(v.ref, level, j) for v in drawn if not v.magnitude > 1e-9 * top]
     return {"point": Name(name), "a": Name(j.a, "body"), "b": Name(j.b, "body"), "geom": geometric_point(name),
-            "level": level, "moving": len(moving), "arrows": Names(moving), "still": len(zeros),
+            "level": level, "accel": int(level == "a"), "moving": len(moving), "arrows": Names(moving), "still": len(zeros),
             "zeros": Names(zeros), "moduli": 1, "unit": ""}
 
 

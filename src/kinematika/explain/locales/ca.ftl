@@ -155,8 +155,8 @@ fig-contact = Els tres punts que coincideixen al contacte { $point } en aquest i
         [0] {""}
         [one] { $format ->
             [md] La fletxa
-           *[other] La fletxa { $level ->
-                [v] blava
+           *[other] La fletxa { $accel ->
+                [0] blava
                *[other] vermella
             }
         } és { $arrows }{ $moduli ->
@@ -166,8 +166,8 @@ fig-contact = Els tres punts que coincideixen al contacte { $point } en aquest i
         }
        *[other] { $format ->
             [md] Les fletxes
-           *[other] Les fletxes { $level ->
-                [v] blaves
+           *[other] Les fletxes { $accel ->
+                [0] blaves
                *[other] vermelles
             }
         } són { $arrows }, a una mateixa escala{ $moduli ->

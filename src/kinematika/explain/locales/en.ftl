@@ -116,8 +116,8 @@ fig-contact = The three points that coincide at the contact { $point } at this i
         [0] {""}
         [one] { $format ->
             [md] The arrow
-           *[other] The { $level ->
-                [v] blue
+           *[other] The { $accel ->
+                [0] blue
                *[other] red
             } arrow
         } is { $arrows }{ $moduli ->
@@ -127,8 +127,8 @@ fig-contact = The three points that coincide at the contact { $point } at this i
         }
        *[other] { $format ->
             [md] The arrows
-           *[other] The { $level ->
-                [v] blue
+           *[other] The { $accel ->
+                [0] blue
                *[other] red
             } arrows
         } are { $arrows }, to one scale{ $moduli ->

@@ -122,8 +122,8 @@ fig-contact = Los tres puntos que coinciden en el contacto { $point } en este in
         [0] {""}
         [one] { $format ->
             [md] La flecha
-           *[other] La flecha { $level ->
-                [v] azul
+           *[other] La flecha { $accel ->
+                [0] azul
                *[other] roja
             }
         } es { $arrows }{ $moduli ->
@@ -133,8 +133,8 @@ fig-contact = Los tres puntos que coinciden en el contacto { $point } en este in
         }
        *[other] { $format ->
             [md] Las flechas
-           *[other] Las flechas { $level ->
-                [v] azules
+           *[other] Las flechas { $accel ->
+                [0] azules
                *[other] rojas
             }
         } son { $arrows }, a una misma escala{ $moduli ->

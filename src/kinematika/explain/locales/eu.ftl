@@ -116,8 +116,8 @@ fig-contact = { $point } kontaktuan une honetan bat datozen hiru puntuak, mekani
         [0] {""}
         [one] { $format ->
             [md] Gezia
-           *[other] Gezi { $level ->
-                [v] urdina
+           *[other] Gezi { $accel ->
+                [0] urdina
                *[other] gorria
             }
         } { $arrows } da{ $moduli ->
@@ -127,8 +127,8 @@ fig-contact = { $point } kontaktuan une honetan bat datozen hiru puntuak, mekani
         }
        *[other] { $format ->
             [md] Geziak
-           *[other] Gezi { $level ->
-                [v] urdinak
+           *[other] Gezi { $accel ->
+                [0] urdinak
                *[other] gorriak
             }
         } { $arrows } dira, eskala berean{ $moduli ->
