@@ -68,7 +68,7 @@ def coincident_figures(name: str, lang: str) -> list:
     return [f for f in figures(name, lang) if f[0].get("coincident")]
 
 
-def section_text(page: str, title: str, following: str) -> str:
+def section_text(page: str, title: str) -> str:
     """The text of the page's section `title` up to the next heading."""
     start = page.index(f"## {title}")
     rest = page[start + 3:]
@@ -93,7 +93,7 @@ def test_a_page_asking_a_contact_draws_its_three_points(name, lang):
     from kinematika.explain.catalogue import catalogue
 
     title = catalogue(lang).format("sec-contact", {})
-    text = section_text(page, title, "")
+    text = section_text(page, title)
     images = re.findall(r"!\[[^\]]*\]\[fig-\d+\]", text)
     assert len(images) == 2 * len(asked), images
     captions = [line for line in text.splitlines() if line.startswith("*") and "^{geom}" in line]
@@ -105,7 +105,7 @@ def test_the_caption_names_what_is_drawn(name, lang):
     """Each figure's caption names the arrows it draws and the zero vectors written beside the
     contact, as many as the figure has: C5-1.8's velocities, one arrow (v_J^geom) and two
     zeros; its accelerations, two arrows and one zero. Read against the drawn marks."""
-    for d, (_, marks, placed, _) in zip([d for d in contact_drawings(name)], coincident_figures(name, lang)):
+    for d, (_, marks, placed, _) in zip(contact_drawings(name), coincident_figures(name, lang)):
         drawn = arrows_of(marks)
         zeros = [p for p in placed if p.label.gid.startswith(d.options["coincident"] + ":")
                  and re.search(r"= 0$", p.label.text)]
@@ -172,6 +172,6 @@ def test_any_model_asking_a_contact_gets_the_figure():
     from kinematika.explain.document import Drawing
 
     for name in ("wheel_rolling", "seed_001_rolling_pair"):
-        sol, doc = explained(name)
+        _, doc = explained(name)
         drawn = [b for b in doc.blocks() if isinstance(b, Drawing) and b.options.get("coincident")]
         assert [d.options["coincident"] for d in drawn] == ["velocity", "acceleration"], name
