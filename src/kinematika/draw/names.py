@@ -125,6 +125,17 @@ def subscript(letter: str, name: str, body: Optional[str] = None,
     return "$" + letter + "_{" + math + "}$"
 
 
+def geometric_symbol(letter: str, name: str) -> str:
+    """`letter` of the geometric contact point at the contact `name`, as the text writes it,
+    v_{J^{geom}} (the notes' J^{geom}, a point of neither body): "geom" raised just after the
+    subscript J, at the subscript's size — $v_{J}{}^{geom}$. Set as a superscript of the
+    subscript, mathtext shrinks it twice (4 pt in a 9 pt label: unreadable on the page,
+    twenty-eighth round (a)). A name mathtext cannot take is written plainly, v(J^geom)."""
+    if not _SIMPLE.match(name):
+        return f"{letter}({plain(name)}^geom)"
+    return "$" + letter + "_{" + _roman(name) + "}{}" + r"^{\mathrm{geom}}" + "$"
+
+
 def point_symbol(letter: str, model: Any, point: str, body: Optional[str],
                  relative_to: Optional[str] = None, lang: Optional[str] = None) -> str:
     """`letter` for the material point `point` of `body` (None, or one whose motion all the

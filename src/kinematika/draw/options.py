@@ -49,12 +49,18 @@ class DrawOptions:
                                       # centre, a line the text finds that centre on ("lies on
                                       # the perpendicular to v_J through J …; these lines
                                       # meet"): drawn as the lines to pins are (issue 30, 19d)
+    coincident: Optional[str] = None  # "velocity" or "acceleration": at each asked contact the
+                                      # three points that coincide there (each body's point and
+                                      # the geometric contact point) with their arrows of that
+                                      # kind, named as the text names them (issue 30, 28a)
 
     def __post_init__(self) -> None:
         if self.lang is not None:
             from ..languages import known
 
             known(self.lang)            # one of the explanation's languages, else a usage error
+        if self.coincident not in (None, "velocity", "acceleration"):
+            raise ValueError(f"coincident: velocity or acceleration, not {self.coincident!r}")
 
     def shows(self, flag: Auto, asked: bool) -> bool:
         """Whether a tri-state option draws: explicitly, or by default when asked."""

@@ -16,8 +16,8 @@ from ..questions import QUESTIONS, answer
 from .options import DrawOptions
 from .words import word
 from .geometry import perpendicular
-from .names import (bare, body_labels, contact_name, equation, formula, pair_symbol, point_symbol,
-                    subscript, value_text)
+from .names import (bare, body_labels, contact_name, equation, formula, geometric_symbol, pair_symbol,
+                    point_symbol, subscript, value_text)
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView, drawing_values,
                     vector_label)
 
@@ -30,6 +30,7 @@ def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> N
     circles, poles, contacts and screw axes."""
     _vectors(scene, sol, options, num)
     _decompositions(scene, sol, options, num)
+    _coincident(scene, sol, options, num)         # after: no composition's parts beside them
     _centres(scene, sol, options, num)
     if options.curvature is not False:
         _curvatures(scene, sol, num, options.lang)
@@ -56,6 +57,38 @@ def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
             rel = rel if rel != sol.model.frame else None
             scene.vectors.append(VectorView(kind, str(ref), label, origin, num.proj(vec), magnitude,
                                             magnitude_text(sol, value, magnitude, options.lang), rel))
+
+
+def _coincident(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
+    """At each asked contact (`contact` questions, seen from the frame), the three points
+    that coincide there, each with its arrow of the kind `options.coincident` asks for, read
+    off the question's answer (`questions.contact`): the point of the joint's first body, of
+    its second, and the geometric contact point, which belongs to neither and moves along
+    both profiles — labelled as the text writes them, v_{J∈a}, v_{J∈b}, v_{J^{geom}}. A zero
+    one (a fixed body's point, a rolling body's instant centre) gets its label "= 0" at the
+    point (`vectors.draw_vectors`), as the notes write v = 0 beside it (issue 30,
+    twenty-eighth round (a): C5-1.8's figure of the three points)."""
+    kind = options.coincident
+    if kind is None:
+        return
+    model = sol.model
+    letter = "v" if kind == "velocity" else "a"
+    labels = body_labels(model, options.lang)
+    for q in drawn_questions(model).contacts:
+        if q.relative_to not in (None, model.frame):
+            continue            # seen from a moving body: the text works the frame's only
+        value = answer(sol, q)
+        joint = model.joint(q.target)
+        name = (options.contacts or {}).get(joint.id) or contact_name(model, joint.id, sol)
+        origin = num.page(value["point"])
+        for part, body in (("body_a", joint.a), ("body_b", joint.b), ("geometric", None)):
+            motion = value[part][kind]
+            vec = np.zeros_like(num.vector(motion)) if _negligible(sol, kind, motion) else num.vector(motion)
+            magnitude = float(np.linalg.norm(vec))
+            label = subscript(letter, name, labels[body]) if body else geometric_symbol(letter, name)
+            ref = f"{name}@{body}" if body else f"{name}:geom"
+            scene.vectors.append(VectorView(kind, ref, label, origin, num.proj(vec), magnitude,
+                                            magnitude_text(sol, motion, magnitude, options.lang)))
 
 
 def _negligible(sol: Any, kind: str, value: tuple) -> bool:
@@ -458,6 +491,7 @@ class Drawn:
         self.centres: list = []
         self.circles: list = []
         self.marks: list = []
+        self.contacts: list = []
         for q in questions:
             QUESTIONS[q.kind].draw(self, q)
 
@@ -482,8 +516,10 @@ class Drawn:
         self.marks.append((_pole, q))
 
     def contact_point(self, q: Any) -> None:
-        """A contact's mark J (`_contact`)."""
+        """A contact's mark J (`_contact`), and its three coincident points where a figure
+        draws them (`_coincident`)."""
         self.marks.append((_contact, q))
+        self.contacts.append(q)
 
     def screw_axis(self, q: Any) -> None:
         """A screw axis, in a 3D figure (`_axis`)."""

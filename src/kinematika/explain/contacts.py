@@ -24,8 +24,8 @@ from typing import Any, Optional
 from ..algebra.vectors import add, scale, sub
 from .asked import worked
 from .context import Ctx, composed, omega_sym, read_along, read_off, segment
-from .document import (Ann, Derived, Equation, Msg, Name, Section, Sym, Term, Value, geometric_name, joint as joint_name,
-                       msg)
+from .document import (Ann, Derived, Drawing, Equation, Msg, Name, Names, Section, Sym, Term, Value, geometric_name,
+                       joint as joint_name, msg)
 from .kinds import rolls
 from .terms import pair_name, point_term, rotation_terms
 
@@ -282,11 +282,58 @@ def contact_section(ctx: Ctx, written: Optional[dict[tuple[str, str], int]] = No
             if f"geom:{level}:{j.id}" in ctx.worked:     # worked out for an acceleration step
                 sec.add(msg("contact.above", sym=geometric_sym(level, bar.name),
                             value=Value(bar.geometric(level), "speed" if level == "v" else "accel")))
-                continue
-            key = f"bar:{bar.c1}:{bar.c2 or bar.turning}" + ("" if level == "v" else ":a")
-            sec.blocks += bar.blocks(level, with_bar=key not in ctx.worked)
-            ctx.worked.update({key, f"geom:{level}:{j.id}"})
+            else:
+                key = f"bar:{bar.c1}:{bar.c2 or bar.turning}" + ("" if level == "v" else ":a")
+                sec.blocks += bar.blocks(level, with_bar=key not in ctx.worked)
+                ctx.worked.update({key, f"geom:{level}:{j.id}"})
+            sec.add(coincident_drawing(ctx, j, bar.name, level))
     return sec
+
+
+def coincident_drawing(ctx: Ctx, j, name: str, level: str) -> Drawing:
+    """The figure of the three points that coincide at the contact `name` of joint j, after
+    the level's equations: the mechanism at the instant with J marked, and at J the velocity
+    (acceleration) of each body's point and of J^{geom} as arrows named as the text names
+    them (`DrawOptions.coincident`), a zero one written "= 0" beside J — as the notes draw
+    C5-1.8's J∈roda, J∈terra and J^{geom} (issue 30, twenty-eighth round (a): four teachers
+    found the page had no figure of them). Any model asking a rolling contact's points gets
+    it; its caption says which arrows are drawn and which are zero, read off the figure
+    itself (`coincident_caption`)."""
+    from .structure import drawing
+
+    kind = "velocity" if level == "v" else "acceleration"
+    fig = drawing(ctx, "fig.contact", velocities=False, accelerations=False, centres=False, curvature=False,
+                  coincident=kind, contacts={j.id: name})
+    fig.caption.args.update(coincident_caption(ctx, j, name, level, fig.options))
+    return fig
+
+
+def coincident_caption(ctx: Ctx, j, name: str, level: str, options: dict) -> dict:
+    """What the figure of the coincident points draws, read off the figure itself (`draw`'s
+    scene), for its caption to say just that: the contact, its two bodies and J^{geom}; the
+    points whose arrows are drawn (`moving`, `arrows`: their symbols, as the labels write
+    them) and those whose vector is zero, written beside J (`still`, `zeros`)."""
+    from ..draw.build import build_scene
+    from ..draw.options import DrawOptions
+
+    kind = options["coincident"]
+    scene = build_scene(ctx.inst, ctx.sol, DrawOptions(**options))
+    drawn = [v for v in scene.vectors if v.kind == kind]
+    top = max([v.magnitude for v in drawn] + [0.0])
+    moving = [_drawn_sym(v.ref, level, j) for v in drawn if v.magnitude > 1e-9 * top]
+    zeros = [_drawn_sym(v.ref, level, j) for v in drawn if not v.magnitude > 1e-9 * top]
+    return {"point": Name(name), "a": Name(j.a, "body"), "b": Name(j.b, "body"), "geom": geometric_point(name),
+            "level": level, "accel": int(level == "a"), "moving": len(moving), "arrows": Names(moving), "still": len(zeros),
+            "zeros": Names(zeros), "moduli": 1, "unit": ""}
+
+
+def _drawn_sym(ref: str, level: str, j) -> Sym:
+    """The symbol of an arrow of the coincident points' figure, from its ref (J@body, J:geom):
+    v_{J∈body} or v_{J^{geom}}, as the text writes it."""
+    name, _, body = ref.partition("@")
+    if not body:
+        return geometric_sym(level, ref.partition(":")[0])
+    return Sym(level, f"{name}∈{body}")
 
 
 def _written(ctx: Ctx, name: str, body: str, level: str, step: int) -> Msg:

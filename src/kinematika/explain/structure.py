@@ -254,6 +254,9 @@ def moduli_units(ctx: Ctx, doc: Any, length_unit: str) -> None:
     for b in doc.blocks():
         if isinstance(b, Drawing) and b.caption.key == "fig.mechanism" and b.caption.args.get("moduli") == 1:
             b.caption.args.update(moduli=2, unit=length_unit)
+        elif isinstance(b, Drawing) and b.caption.key == "fig.contact" and b.caption.args.get("moduli") == 1:
+            # the coincident points' figure (`contacts.coincident_drawing`): its level's unit whole
+            b.caption.args.update(moduli=2, unit=f"{length_unit}/s" + ("" if b.caption.args["level"] == "v" else "²"))
 
 
 def derived_arrows(ctx: Ctx, doc: Any, velocities: Optional[Any]) -> None:

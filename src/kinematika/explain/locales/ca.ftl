@@ -145,6 +145,53 @@ fig-rest = ; { $count ->
         [one] { $points } té velocitat nul·la en aquest instant{ $centre }, escrita al costat
        *[other] { $points } tenen velocitat nul·la en aquest instant, escrita al costat
     }
+fig-contact = Els tres punts que coincideixen al contacte { $point } en aquest instant, sobre el mecanisme a escala: el punt { ELISION($a) ->
+        [vowel] d’{ $a }
+       *[other] de { $a }
+    }, el punt { ELISION($b) ->
+        [vowel] d’{ $b }
+       *[other] de { $b }
+    } i el punt geomètric de contacte { $geom }. { $moving ->
+        [0] {""}
+        [one] { $format ->
+            [md] La fletxa
+           *[other] La fletxa { $accel ->
+                [0] blava
+               *[other] vermella
+            }
+        } és { $arrows }{ $moduli ->
+            [0] {""}
+            [2] {", amb el seu mòdul, en "}{ $unit }
+           *[other] {", amb el seu mòdul"}
+        }
+       *[other] { $format ->
+            [md] Les fletxes
+           *[other] Les fletxes { $accel ->
+                [0] blaves
+               *[other] vermelles
+            }
+        } són { $arrows }, a una mateixa escala{ $moduli ->
+            [0] {""}
+            [2] {", amb els seus mòduls, en "}{ $unit }
+           *[other] {", amb els seus mòduls"}
+        }
+    }{ $still ->
+        [0] .
+        [one] { $moving ->
+            [0] {""}
+           *[other] {"; "}
+        }{ $zeros } és nul·la, escrita al costat { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }.
+       *[other] { $moving ->
+            [0] {""}
+           *[other] {"; "}
+        }{ $zeros } són nul·les, escrites al costat { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }.
+    }
 fig-mechanism = El mecanisme en aquest instant, a escala{ $dim ->
         [3] , en projecció isomètrica (els eixos x, y, z a baix a la dreta)
        *[other] {""}

@@ -112,6 +112,41 @@ fig-rest = ; { $count ->
         [one] { $points } has zero velocity at this instant{ $centre }, written beside it
        *[other] { $points } have zero velocity at this instant, written beside them
     }
+fig-contact = The three points that coincide at the contact { $point } at this instant, on the mechanism to scale: the point of { $a }, the point of { $b } and the geometric contact point { $geom }. { $moving ->
+        [0] {""}
+        [one] { $format ->
+            [md] The arrow
+           *[other] The { $accel ->
+                [0] blue
+               *[other] red
+            } arrow
+        } is { $arrows }{ $moduli ->
+            [0] {""}
+            [2] {", with its magnitude, in "}{ $unit }
+           *[other] {", with its magnitude"}
+        }
+       *[other] { $format ->
+            [md] The arrows
+           *[other] The { $accel ->
+                [0] blue
+               *[other] red
+            } arrows
+        } are { $arrows }, to one scale{ $moduli ->
+            [0] {""}
+            [2] {", with their magnitudes, in "}{ $unit }
+           *[other] {", with their magnitudes"}
+        }
+    }{ $still ->
+        [0] .
+        [one] { $moving ->
+            [0] {""}
+           *[other] {"; "}
+        }{ $zeros } is zero, written beside { $point }.
+       *[other] { $moving ->
+            [0] {""}
+           *[other] {"; "}
+        }{ $zeros } are zero, written beside { $point }.
+    }
 fig-mechanism = The mechanism at this instant, to scale{ $dim ->
         [3] , in isometric projection (the axes x, y, z at the lower right)
        *[other] {""}

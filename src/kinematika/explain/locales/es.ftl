@@ -118,6 +118,41 @@ fig-rest = ; { $count ->
         [one] { $points } tiene velocidad nula en este instante{ $centre }, escrita a su lado
        *[other] { $points } tienen velocidad nula en este instante, escrita a su lado
     }
+fig-contact = Los tres puntos que coinciden en el contacto { $point } en este instante, sobre el mecanismo a escala: el punto de { $a }, el punto de { $b } y el punto geométrico de contacto { $geom }. { $moving ->
+        [0] {""}
+        [one] { $format ->
+            [md] La flecha
+           *[other] La flecha { $accel ->
+                [0] azul
+               *[other] roja
+            }
+        } es { $arrows }{ $moduli ->
+            [0] {""}
+            [2] {", con su módulo, en "}{ $unit }
+           *[other] {", con su módulo"}
+        }
+       *[other] { $format ->
+            [md] Las flechas
+           *[other] Las flechas { $accel ->
+                [0] azules
+               *[other] rojas
+            }
+        } son { $arrows }, a una misma escala{ $moduli ->
+            [0] {""}
+            [2] {", con sus módulos, en "}{ $unit }
+           *[other] {", con sus módulos"}
+        }
+    }{ $still ->
+        [0] .
+        [one] { $moving ->
+            [0] {""}
+           *[other] {"; "}
+        }{ $zeros } es nula, escrita junto a { $point }.
+       *[other] { $moving ->
+            [0] {""}
+           *[other] {"; "}
+        }{ $zeros } son nulas, escritas junto a { $point }.
+    }
 fig-mechanism = El mecanismo en este instante, a escala{ $dim ->
         [3] , en proyección isométrica (los ejes x, y, z abajo a la derecha)
        *[other] {""}

@@ -112,6 +112,41 @@ fig-rest = ; { $count ->
         [one] { $points } puntuaren abiadura nulua da une honetan{ $centre }, ondoan idatzita
        *[other] { $points } puntuen abiadura nulua da une honetan, ondoan idatzita
     }
+fig-contact = { $point } kontaktuan une honetan bat datozen hiru puntuak, mekanismoaren gainean eskalan: { $a } solidoaren puntua, { $b } solidoaren puntua eta { $geom } kontaktu-puntu geometrikoa. { $moving ->
+        [0] {""}
+        [one] { $format ->
+            [md] Gezia
+           *[other] Gezi { $accel ->
+                [0] urdina
+               *[other] gorria
+            }
+        } { $arrows } da{ $moduli ->
+            [0] {""}
+            [2] {", bere moduluarekin ("}{ $unit }-tan)
+           *[other] {", bere moduluarekin"}
+        }
+       *[other] { $format ->
+            [md] Geziak
+           *[other] Gezi { $accel ->
+                [0] urdinak
+               *[other] gorriak
+            }
+        } { $arrows } dira, eskala berean{ $moduli ->
+            [0] {""}
+            [2] {", beren moduluekin ("}{ $unit }-tan)
+           *[other] {", beren moduluekin"}
+        }
+    }{ $still ->
+        [0] .
+        [one] { $moving ->
+            [0] {""}
+           *[other] {"; "}
+        }{ $zeros } nulua da, { $point } puntuaren ondoan idatzita.
+       *[other] { $moving ->
+            [0] {""}
+           *[other] {"; "}
+        }{ $zeros } nuluak dira, { $point } puntuaren ondoan idatzita.
+    }
 fig-mechanism = Mekanismoa une honetan, eskalan{ $dim ->
         [3] , proiekzio isometrikoan (x, y, z ardatzak behean eskuinean)
        *[other] {""}
