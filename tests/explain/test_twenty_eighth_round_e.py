@@ -1,0 +1,59 @@
+"""Issue 30, twenty-eighth round (e): the Data sections, and the Basque and Catalan wording,
+after the fifth reading (four teachers, one a language; docs/explain.md, "Twenty-eighth
+round (e)").
+
+Each rule is general and checked over the notes' seeds in the four languages where it can
+be; the pages the readers quoted are checked by hand beside it.
+"""
+from __future__ import annotations
+
+import re
+
+from .helpers import LANGS, NOTES_SEEDS, SEEDS, model_tree, over, plain_page
+
+# the legend of shortened subscripts, as each language opens it
+LEGEND = {"en": "Notation:", "es": "Notación:", "ca": "Notació:", "eu": "Notazioa:"}
+DATA = {"en": "## Data", "es": "## Datos", "ca": "## Dades", "eu": "## Datuak"}
+
+
+def _data(page: str, lang: str) -> str:
+    """The page's Data section, its italics taken off."""
+    start = page.index(DATA[lang])
+    end = page.index("\n## ", start + 3)
+    return page[start:end].replace("*", "")
+
+
+def _opening(text: str) -> str:
+    """The first four words of a model's paragraph (what the page writes of it unchanged)."""
+    return " ".join(text.replace("*", "").split()[:4])
+
+
+# -- 1. the statement first, then the notation --------------------------------------------------------------------
+@over(name=SEEDS, lang=LANGS)
+def test_the_notation_follows_the_statement(name: str, lang: str) -> None:
+    """The model's statement of the mechanism (`names.LANG.data`) comes before any legend of
+    shortened subscripts: a notation before the mechanism is described names bodies the
+    reader has not met (C5-E.6's "Notation: ω_wheel1 … ω_{sprocket rel frame}" opened the
+    Data, before the bicycle)."""
+    page = plain_page(name, lang)
+    data = _data(page, lang)
+    said = (model_tree(name).get("names") or {}).get(lang, {}).get("data") or []
+    if LEGEND[lang] not in data:
+        return
+    legend = data.index(LEGEND[lang])
+    for paragraph in said:
+        opening = _opening(paragraph)
+        assert opening in data, (opening, data[:400])
+        assert data.index(opening) < legend, (opening, data[legend:legend + 80])
+
+
+def test_the_bicycles_data_open_with_the_bicycle_by_hand() -> None:
+    """C5-E.6: the first words of the Data after the units and the sign convention are the
+    bicycle's, and the notation stands before the tables."""
+    first = {"en": "The bicycle moves without slipping", "es": "La bicicleta se mueve sin deslizar",
+             "ca": "La bicicleta es mou sense lliscar", "eu": "Bizikleta irristatu gabe mugitzen da"}
+    for lang in LANGS:
+        data = _data(plain_page("seed_c5_e6_bicycle", lang), lang)
+        paragraphs = [p for p in data.split("\n\n")[1:] if p.strip()]
+        assert paragraphs[2].startswith(first[lang]), (lang, paragraphs[2][:60])
+        assert LEGEND[lang] in data and data.index(first[lang]) < data.index(LEGEND[lang]) < data.index("| "), lang
