@@ -57,3 +57,42 @@ def test_the_bicycles_data_open_with_the_bicycle_by_hand() -> None:
         paragraphs = [p for p in data.split("\n\n")[1:] if p.strip()]
         assert paragraphs[2].startswith(first[lang]), (lang, paragraphs[2][:60])
         assert LEGEND[lang] in data and data.index(first[lang]) < data.index(LEGEND[lang]) < data.index("| "), lang
+
+
+# -- 2. one name a thing, and two things never one name and its plural -----------------------------------------------
+# the articles and prepositions a point's name is built with (dels/del, de los/del …)
+LINKS = {"de", "del", "dels", "la", "el", "los", "las", "les", "els", "the", "of", "a", "al"}
+
+
+def _words(name: str) -> tuple[str, ...]:
+    """A name's words, singular (a final -s or -es taken off), without its articles."""
+    return tuple(re.sub(r"(?<=\w\w\w)e?s$", "", w) for w in re.findall(r"\w+", name.lower()) if w not in LINKS)
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_no_two_points_are_named_by_one_name_and_its_plural(name: str, lang: str) -> None:
+    """Two points of one model are never named by words that differ only by a plural or an
+    article: C5-E.6's C "eix dels pedals" and P "eix del pedal" (ca). The notes' words: C
+    is the centre of the pedals ("centre dels pedals"), P the end of a pedal."""
+    points = ((model_tree(name).get("names") or {}).get(lang) or {}).get("points") or {}
+    seen: dict[tuple, str] = {}
+    for p, said in points.items():
+        said = said if isinstance(said, str) else str(said)
+        key = _words(said)
+        assert key not in seen, (seen.get(key), p, said)
+        seen[key] = p
+
+
+def test_the_bicycles_pedals_are_one_word_by_hand() -> None:
+    """C5-E.6: the crank of length L is the notes' "pedal" in es, ca and eu wherever the page
+    names it (L's row, the statement, P's row); es never calls it a "biela" beside it."""
+    es = plain_page("seed_c5_e6_bicycle", "es")
+    assert "biela" not in es.lower()
+    assert "| *L* | longitud de los pedales |" in es and "los pedales tienen longitud L" in es
+    ca = plain_page("seed_c5_e6_bicycle", "ca")
+    assert "| C | centre dels pedals |" in ca and "| P | extrem del pedal |" in ca
+    assert "eix dels pedals" not in ca and "eix del pedal" not in ca
+    assert "L’enunciat anomena r el radi del *plat amb els pedals* i R el del *pinyó*" in ca
+    eu = plain_page("seed_c5_e6_bicycle", "eu")
+    assert "pedal-beso" not in eu and "| *L* | pedalen luzera |" in eu and "| P | pedalaren muturra |" in eu
+    assert "*Plater pedaldunak* eta *pinoiak* erradio desberdinak dituzte" in eu
