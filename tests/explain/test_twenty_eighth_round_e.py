@@ -96,3 +96,31 @@ def test_the_bicycles_pedals_are_one_word_by_hand() -> None:
     eu = plain_page("seed_c5_e6_bicycle", "eu")
     assert "pedal-beso" not in eu and "| *L* | pedalen luzera |" in eu and "| P | pedalaren muturra |" in eu
     assert "*Plater pedaldunak* eta *pinoiak* erradio desberdinak dituzte" in eu
+
+
+# -- 3. the Data say a thing once ------------------------------------------------------------------------------------
+@over(name=SEEDS, lang=LANGS)
+def test_the_data_say_no_clause_twice(name: str, lang: str) -> None:
+    """No clause of four words or more is written twice in the Data's paragraphs (tables
+    aside, brackets and commas aside): C5-1.2's "the bar OQ turns at 1 rad/s
+    counter-clockwise" ended both of the statement's paragraphs (and "Given: ω_OQ = 1 rad/s"
+    said it a third time)."""
+    data = _data(plain_page(name, lang), lang)
+    text = "\n".join(line for line in data.splitlines() if not line.startswith("|"))
+    text = re.sub(r"\([^()]*\)", "", text)
+    clauses = [c.replace(",", "").strip().lower() for c in re.split(r"[.;:](?:\s|$)", text)]
+    long = [c for c in clauses if len(c.split()) >= 4]
+    twice = sorted({c for c in long if long.count(c) > 1})
+    assert not twice, twice
+
+
+def test_the_bars_rotation_is_said_once_in_words_by_hand() -> None:
+    """C5-1.2: the bar OQ's rate in words once (the statement), then "Given: ω_OQ = 1 rad/s"."""
+    said = {"en": "turns at 1 rad/s", "es": "gira a 1 rad/s", "ca": "gira a 1 rad/s", "eu": "1 rad/s-an biratzen da"}
+    for lang, words in said.items():
+        data = _data(plain_page("seed_c5_1_2_bar_on_inclined_wheels", lang), lang)
+        assert data.count(words) == 1, lang
+    eu = plain_page("seed_c5_1_2_bar_on_inclined_wheels", "eu")
+    assert "gurpilek planoak K0 puntutik s = 3 m-ko distantziara ukitzen dituzte" in eu
+    ca = _data(plain_page("seed_c5_1_2_bar_on_inclined_wheels", "ca"), "ca")
+    assert "està articulada a la barra OQ pel punt O; la barra OQ, al seu torn, està articulada pels punts O i Q" in ca
