@@ -124,3 +124,36 @@ def test_the_bars_rotation_is_said_once_in_words_by_hand() -> None:
     assert "gurpilek planoak K0 puntutik s = 3 m-ko distantziara ukitzen dituzte" in eu
     ca = _data(plain_page("seed_c5_1_2_bar_on_inclined_wheels", "ca"), "ca")
     assert "està articulada a la barra OQ pel punt O; la barra OQ, al seu torn, està articulada pels punts O i Q" in ca
+
+
+# -- 4. the belt's and the pulley block's statements -----------------------------------------------------------------
+DIRECTION_TOO = {"en": "gives the direction of", "es": "da también la dirección de",
+                 "ca": "també dona la direcció de", "eu": "norabidea ere ematen du"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_the_count_of_freedoms_names_no_one_datums_direction(name: str, lang: str) -> None:
+    """The mobility the statement leaves is said with its data alone: "one for each datum
+    (v_C1 and v_C3)", never "the statement gives the direction of v_C3 too", which read as if
+    v_C1 had none (both are given downwards in the Data's own lines)."""
+    assert DIRECTION_TOO[lang] not in plain_page(name, lang)
+
+
+def test_the_belt_and_the_pulley_block_by_hand() -> None:
+    """C5-1.6: the arm, hinged at O (the fixed pulley's centre), carries the moving pulley at
+    A (es: "Un brazo articulado en O, centro de la polea fija, y en A lleva …" was garbled);
+    C5-1.5: two data, two degrees of freedom; one cable passes over the four pulleys (two of
+    them turn on fixed axles: they do not hang)."""
+    belt = {"en": "An arm, hinged at O (the centre of the fixed pulley), carries the moving pulley at A;",
+            "es": "Un brazo, articulado en O (centro de la polea fija), lleva en A la polea móvil;",
+            "eu": "haien O eta A zentroetan giltzatuta,"}
+    for lang, text in belt.items():
+        assert text in _data(plain_page("seed_c5_1_6_belt", lang), lang), lang
+    block = {"en": "The mechanism has two degrees of freedom, one for each datum (v_C1 and v_C3).",
+             "es": "El mecanismo tiene dos grados de libertad, uno por cada dato (v_C1 y v_C3).",
+             "ca": "El mecanisme té dos graus de llibertat, un per cada dada (v_C1 i v_C3).",
+             "eu": "Mekanismoak bi askatasun-gradu ditu, datu bakoitzeko bat (v_C1 eta v_C3)."}
+    for lang, text in block.items():
+        assert text in plain_page("seed_c5_1_5_pulley_block", lang), lang
+    assert "Un mismo cable inextensible pasa por cuatro poleas de radio r" in plain_page("seed_c5_1_5_pulley_block", "es")
+    assert "Kable luzaezin bakar batek r erradioko lau polea inguratzen ditu" in plain_page("seed_c5_1_5_pulley_block", "eu")

@@ -188,8 +188,7 @@ def test_the_pulley_blocks_freedoms_by_hand() -> None:
     """C5-1.5: the statement gives v_C1 (down, along the vertical) and v_C3 = (0; −2v) whole,
     its direction the notes' "no pendulum motion"; with that direction the mechanism has two
     degrees of freedom, one a datum (the joints alone leave three: the sixth round)."""
-    said = {"en": "The mechanism has two degrees of freedom, one for each datum (v_C1 and v_C3); the statement gives "
-                  "the direction of v_C3 too.",
+    said = {"en": "The mechanism has two degrees of freedom, one for each datum (v_C1 and v_C3).",
             "es": "El mecanismo tiene dos grados de libertad, uno por cada dato (v_C1 y v_C3)",
             "ca": "El mecanisme té dos graus de llibertat, un per cada dada (v_C1 i v_C3)",
             "eu": "Mekanismoak bi askatasun-gradu ditu, datu bakoitzeko bat (v_C1 eta v_C3)"}

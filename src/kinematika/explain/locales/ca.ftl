@@ -112,7 +112,7 @@ structure-dof_data = El mecanisme té { $dof ->
         [2] dos graus
         [3] tres graus
        *[other] { $dof } graus
-    } de llibertat, un per cada dada ({ $data }); l’enunciat també dona la direcció de { $whole }.
+    } de llibertat, un per cada dada ({ $data }).
 shape-concentric = { $n ->
         [2] dues circumferències concèntriques
        *[other] { $n } circumferències concèntriques

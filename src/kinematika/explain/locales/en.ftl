@@ -85,7 +85,7 @@ structure-dof_data = The mechanism has { $dof ->
         [2] two degrees
         [3] three degrees
        *[other] { $dof } degrees
-    } of freedom, one for each datum ({ $data }); the statement gives the direction of { $whole } too.
+    } of freedom, one for each datum ({ $data }).
 shape-concentric = { $n ->
         [2] two concentric circles
        *[other] { $n } concentric circles

@@ -91,7 +91,7 @@ structure-dof_data = El mecanismo tiene { $dof ->
         [2] dos grados
         [3] tres grados
        *[other] { $dof } grados
-    } de libertad, uno por cada dato ({ $data }); el enunciado da también la dirección de { $whole }.
+    } de libertad, uno por cada dato ({ $data }).
 shape-concentric = { $n ->
         [2] dos circunferencias concéntricas
        *[other] { $n } circunferencias concéntricas

@@ -85,7 +85,7 @@ structure-dof_data = Mekanismoak { $dof ->
         [2] bi askatasun-gradu ditu
         [3] hiru askatasun-gradu ditu
        *[other] { $dof } askatasun-gradu ditu
-    }, datu bakoitzeko bat ({ $data }); enuntziatuak { $whole } abiaduraren norabidea ere ematen du.
+    }, datu bakoitzeko bat ({ $data }).
 shape-concentric = { $n ->
         [2] bi zirkunferentzia zentrokide
        *[other] { $n } zirkunferentzia zentrokide
