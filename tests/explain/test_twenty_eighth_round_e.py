@@ -157,3 +157,50 @@ def test_the_belt_and_the_pulley_block_by_hand() -> None:
         assert text in plain_page("seed_c5_1_5_pulley_block", lang), lang
     assert "Un mismo cable inextensible pasa por cuatro poleas de radio r" in plain_page("seed_c5_1_5_pulley_block", "es")
     assert "Kable luzaezin bakar batek r erradioko lau polea inguratzen ditu" in plain_page("seed_c5_1_5_pulley_block", "eu")
+
+
+# -- 5. Basque: the verb last, one name for the instant centre, the words the teacher read ---------------------------
+@over(name=SEEDS)
+def test_a_basque_equation_sentence_ends_with_its_verb(name: str) -> None:
+    """Basque puts "da" after the sentence's last noun, never between a formula and the
+    rest: "Beraz, 2. urratsean v_{B∈N} aurkitzeko erabilitako ekuazioa v_{B∈N} = … da", not
+    "Beraz, v_{B∈N} = … da 2. urratsean … erabilitako ekuazioa" (001_p_pair, 001_rolling)."""
+    page = plain_page(name, "eu")
+    assert not re.search(r"Beraz, [va]_\S* = [^.]* da \d+\. urratsean", page), name
+
+
+@over(name=SEEDS)
+def test_the_basque_instant_centre_is_named_in_full(name: str) -> None:
+    """Every Basque page names a body's instant centre "biraketa-zentro instantaneoa" (BZI),
+    never "biraketa-zentroa" alone (C5-2.1's and 2.2's "*Txasisaren* biraketa-zentroa bi
+    zuzen hauetan dago")."""
+    page = plain_page(name, "eu")
+    bare = re.findall(r"biraketa-zentro(?! instantaneo)\w*", page)
+    assert not bare, bare[:3]
+
+
+ADDS = {"en": "differ by the Coriolis terms", "es": "difieren en los términos de Coriolis",
+        "ca": "difereixen en els termes de Coriolis", "eu": "arteko aldea Coriolisen"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_a_sum_is_not_called_a_difference(name: str, lang: str) -> None:
+    """The rolling pair's two relative accelerations: their SUM is 2 (ω_R − ω_N) × v_{F∈R rel
+    N}; the page said they "differ by" it (eu "arteko aldea")."""
+    assert ADDS[lang] not in plain_page(name, lang)
+
+
+def test_the_basque_wording_by_hand() -> None:
+    """The Basque teacher's items, each where it was read."""
+    p_pair = plain_page("seed_001_p_pair_coriolis", "eu")
+    assert ("Beraz, 2. urratsean v_{B∈N} aurkitzeko erabilitako ekuazioa v_{B∈N} = v_{arr,B} + v_{B∈N rel M} da."
+            in p_pair)
+    assert "puntuko puntuaren" not in p_pair
+    rolling = plain_page("seed_001_rolling_pair", "eu")
+    assert "Beraz, 2. urratsean α_N eta a_{A∈R rel N} aurkitzeko erabilitako ekuazioa a_A = " in rolling
+    assert "Bi azelerazio erlatiboak ez dira, oro har, guztiz aurkakoak: haien batura" in rolling
+    assert "*Txasisaren* biraketa-zentro instantaneoa bi zuzen hauetan dago" in plain_page("seed_c5_2_1_tricycle", "eu")
+    assert "*S2 txasisaren* biraketa-zentro instantaneoa bi zuzen hauetan dago" in plain_page("seed_c5_2_2_articulated", "eu")
+    assert "*OQ elementua* *lurrari* O puntuan giltzatuta dago;" in plain_page("seed_c5_1_3_bar_in_sleeve", "eu")
+    assert "*N elementuaren* eta *P elementuaren* A eta E muturrak" in plain_page("seed_001_r_pairs", "eu")
+    assert "45° hartzen da, ezkerrerantz, eta angelu horrekin betetzen da apunteen φ̇" in plain_page("seed_c5_2_1_tricycle", "eu")

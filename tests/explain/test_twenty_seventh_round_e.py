@@ -113,7 +113,7 @@ def test_the_p_pairs_drag_and_the_rolling_pairs_reverse_by_hand() -> None:
                    "és l’equació del pas 2, amb la qual s’ha trobat v_{B∈N}."),
             "eu": ("*M gidaren* B puntuarekin bat datorren puntuaren abiadura, 1. urratsean aurkitua.",
                    "*M gidaren* B puntuarekin bat datorren puntuaren azelerazioa, 1. urratsean aurkitua.",
-                   "da 2. urratsean v_{B∈N} aurkitzeko erabilitako ekuazioa.")}
+                   "Beraz, 2. urratsean v_{B∈N} aurkitzeko erabilitako ekuazioa v_{B∈N} = ")}   # verb last (28 e)
     for lang, texts in drag.items():
         page = plain_page("seed_001_p_pair_coriolis", lang)
         for text in texts:
