@@ -204,3 +204,29 @@ def test_the_basque_wording_by_hand() -> None:
     assert "*OQ elementua* *lurrari* O puntuan giltzatuta dago;" in plain_page("seed_c5_1_3_bar_in_sleeve", "eu")
     assert "*N elementuaren* eta *P elementuaren* A eta E muturrak" in plain_page("seed_001_r_pairs", "eu")
     assert "45° hartzen da, ezkerrerantz, eta angelu horrekin betetzen da apunteen φ̇" in plain_page("seed_c5_2_1_tricycle", "eu")
+
+
+# -- 6. Catalan: one elision rule, the notes' ------------------------------------------------------------------------
+@over(name=SEEDS)
+def test_catalan_elides_before_a_vowel_letter_only(name: str) -> None:
+    """Catalan elides de/el/la before a point's or a body's letter when the letter is a vowel
+    (d'A1, d'O, l'E) and never before a consonant whose letter's name begins with a vowel
+    sound: the notes write "respecte de R", "fixa a R", so "de S1", "de F", never "d'S1"
+    (C5-2.2 mixed "de S1" ×8 with "d'S1" ×2; C5-1.4 "d'S"). Page and model alike."""
+    page = plain_page(name, "ca")
+    consonant = re.findall(r"\b[dlDL][’'][B-DF-HJ-NP-TV-Z][0-9′]*\b", page)
+    assert not consonant, consonant[:4]
+    vowel = re.findall(r"\b(?:[Dd]e|[Ee]l|[Ll]a) [AEIOU][0-9′]*(?![\w′'])", page)
+    assert not vowel, vowel[:4]
+
+
+def test_the_catalan_wording_by_hand() -> None:
+    """C5-2.2's S1 and S2 with one form, and the Catalan teacher's sentences."""
+    articulated = plain_page("seed_c5_2_2_articulated", "ca")
+    assert "d’S1" not in articulated and "d’S2" not in articulated
+    assert "les dues rodes de S1" in articulated and "la rotació de les rodes de S2" in articulated
+    assert "els dos xassissos S1 i S2, articulats a O, són idèntics, i les quatre rodes també" in articulated
+    assert "a partir de les velocitats d’A2 i de S" in plain_page("seed_c5_1_4_epicyclic", "ca")
+    assert "Al punt B, el *bloc N* està articulat a un *balancí*" in plain_page("seed_001_p_pair_coriolis", "ca")
+    gears = _data(plain_page("seed_c5_e2_gear_change", "ca"), "ca")
+    assert "El braç, articulat pel seu centre al centre O de la roda central fixa (també de radi r), gira" in gears
