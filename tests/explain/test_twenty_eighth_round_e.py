@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 
-from .helpers import LANGS, NOTES_SEEDS, SEEDS, model_tree, over, plain_page
+from .helpers import LANGS, SEEDS, model_tree, over, plain_page
 
 # the legend of shortened subscripts, as each language opens it
 LEGEND = {"en": "Notation:", "es": "Notación:", "ca": "Notació:", "eu": "Notazioa:"}
