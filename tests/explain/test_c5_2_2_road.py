@@ -41,7 +41,7 @@ ON_AXLE = {      # fifteenth round (a): said once, inside the centre's sentence
     "ca": ("que és també la perpendicular a v_P per P", "la perpendicular a v_O pel punt O",
            "El CIR del *xassís S2*"),
     "eu": ("P puntuan v_P abiadurarekiko perpendikularra ere badena",
-           "v_O abiadurarekiko perpendikularra O puntuan", "*S2 txasisaren* biraketa-zentroa"),
+           "v_O abiadurarekiko perpendikularra O puntuan", "*S2 txasisaren* biraketa-zentro instantaneoa"),   # 28 e
 }
 
 

@@ -133,5 +133,5 @@ def test_plural_forms_chosen_by_count(lang, one, two, many):
 
 def test_catalan_elides_before_vowel_sounds():
     from kinematika.explain.catalogue import elision
-    assert [elision(n) for n in ("O4", "A", "F", "B", "AB", "ring", "arm", "handle", "P")] == \
-        ["vowel", "vowel", "vowel", "other", "vowel", "other", "vowel", "vowel", "other"]
+    assert [elision(n) for n in ("O4", "A", "F", "B", "AB", "ring", "arm", "handle", "P", "S1", "R")] == \
+        ["vowel", "vowel", "other", "other", "vowel", "other", "vowel", "vowel", "other", "other", "other"]   # F, S1, R: as the notes (28 e)

@@ -17,7 +17,7 @@ MEMBER = re.compile(r"v_\{(\w+)∈([^{}]+?)\}")
 SAYS = {"en": r"is the velocity of the point of (?:the )?\*[^*]+\* at {p}\b",
         "es": r"es la velocidad del punto de.{{0,6}}\*[^*]+\* situado en {p}\b",
         "ca": r"és la velocitat del punt d.{{0,6}}\*[^*]+\* situat a {p}\b",
-        "eu": r"\*[^*]+\*(?: solidoaren)? {p} puntuko puntuaren abiadura da"}
+        "eu": r"\*[^*]+\*(?: solidoaren)? {p} puntuarekin bat datorren puntuaren abiadura da"}   # round 28 e
 
 
 def _members(page: str, lang: str) -> list:

@@ -217,4 +217,5 @@ def test_the_rollers_centre_moves_along_a_guide():
     assert "cuyo centro A lleva una corredera" not in es
     assert "cuyo centro A se desplaza por una guía, la recta horizontal que pasa por B" in es
     ca = rendered("seed_001_rolling_pair", "ca", "md", drawings=False)
-    assert "el centre A del qual es desplaça per una guia" in ca
+    # twenty-eighth round (e): the corredora carries the centre along the guide (one clause a subject)
+    assert "Una *corredora* porta el centre A del *corró R* al llarg d’una guia horitzontal que passa per B" in ca

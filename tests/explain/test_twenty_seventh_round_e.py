@@ -113,7 +113,7 @@ def test_the_p_pairs_drag_and_the_rolling_pairs_reverse_by_hand() -> None:
                    "és l’equació del pas 2, amb la qual s’ha trobat v_{B∈N}."),
             "eu": ("*M gidaren* B puntuarekin bat datorren puntuaren abiadura, 1. urratsean aurkitua.",
                    "*M gidaren* B puntuarekin bat datorren puntuaren azelerazioa, 1. urratsean aurkitua.",
-                   "da 2. urratsean v_{B∈N} aurkitzeko erabilitako ekuazioa.")}
+                   "Beraz, 2. urratsean v_{B∈N} aurkitzeko erabilitako ekuazioa v_{B∈N} = ")}   # verb last (28 e)
     for lang, texts in drag.items():
         page = plain_page("seed_001_p_pair_coriolis", lang)
         for text in texts:
@@ -188,8 +188,7 @@ def test_the_pulley_blocks_freedoms_by_hand() -> None:
     """C5-1.5: the statement gives v_C1 (down, along the vertical) and v_C3 = (0; −2v) whole,
     its direction the notes' "no pendulum motion"; with that direction the mechanism has two
     degrees of freedom, one a datum (the joints alone leave three: the sixth round)."""
-    said = {"en": "The mechanism has two degrees of freedom, one for each datum (v_C1 and v_C3); the statement gives "
-                  "the direction of v_C3 too.",
+    said = {"en": "The mechanism has two degrees of freedom, one for each datum (v_C1 and v_C3).",
             "es": "El mecanismo tiene dos grados de libertad, uno por cada dato (v_C1 y v_C3)",
             "ca": "El mecanisme té dos graus de llibertat, un per cada dada (v_C1 i v_C3)",
             "eu": "Mekanismoak bi askatasun-gradu ditu, datu bakoitzeko bat (v_C1 eta v_C3)"}

@@ -21,7 +21,7 @@ import numpy as np
 from kinematika.explain.catalogue import catalogue
 from kinematika.explain.render.markdown import MarkdownRenderer
 
-from .helpers import LANGS, SEEDS, explained, over, plain_page, recorded_pages, rendered
+from .helpers import LANGS, SEEDS, explained, model_tree, over, plain_page, recorded_pages, rendered
 
 # ---- 1. the template sentences -------------------------------------------------------------------------------
 V_INTRO = {"eu": "Planoko ekuazio bektorial batek bi ezezagun ebazten ditu: urrats bakoitzean ? ikurraz markatutako "
@@ -118,8 +118,9 @@ def test_g_no_subscript_is_a_name_of_several_words(name: str, lang: str) -> None
 def test_g_a_shortened_index_is_declared_once_before_its_use(name: str, lang: str) -> None:
     """A body's index that a student cannot read off its name (gurpila1 for *ezkerreko
     gurpila*) is said in the page's one notation line, and that line stands before the
-    first symbol that writes it (C5-E.3's Data "ω_gurpila1 = −ω", C5-E.6's statement
-    "r ω_pinoia = R ω_platera", C5-2.1's Data v_{F∈furka})."""
+    first symbol that writes it (C5-E.3's Data "ω_gurpila1 = −ω", C5-2.1's Data v_{F∈furka}),
+    but after the model's statement that writes one (C5-E.6's "r ω_pinoia = R ω_platera"):
+    the statement is read whole, then its notation (twenty-eighth round (e))."""
     page = plain_page(name, lang)
     lines = [k for k, ln in enumerate(page.splitlines()) if ln.startswith(NOTATION[lang])]
     assert len(lines) <= 1, lines
@@ -138,7 +139,19 @@ def test_g_a_shortened_index_is_declared_once_before_its_use(name: str, lang: st
         assert lines, (body, label)
         line = page.splitlines()[lines[0]]
         assert label in line, (label, line)
-        assert at <= used.start(), (label, page[used.start() - 60:used.start() + 20])
+        if used.start() < at:           # read in the model's statement, the legend right after it (28 e)
+            assert _in_statement(name, lang, page, used.start(), at), (label, page[used.start() - 60:used.start() + 20])
+
+
+def _in_statement(name: str, lang: str, page: str, start: int, at: int) -> bool:
+    """Whether the page's text from `start` to the notation line at `at` is the model's
+    statement alone (`names.LANG.data`, its paragraphs' first words): the twenty-eighth round
+    (e) reads the statement whole, then its notation (C5-E.6's "r ω_pinoia = R ω_platera")."""
+    said = [" ".join(p.replace("*", "").split()[:4]) for p in
+            (model_tree(name).get("names") or {}).get(lang, {}).get("data") or []]
+    begin = page.rfind("\n\n", 0, start) + 2
+    paragraphs = [p for p in page[begin:at].split("\n\n") if p.strip()]
+    return bool(paragraphs) and all(any(p.replace("*", "").startswith(o) for o in said) for p in paragraphs)
 
 
 def test_g_the_wheels_by_hand() -> None:

@@ -26,9 +26,12 @@ __all__ = ["LANGS", "LOCALES", "catalogue", "known"]
 
 LOCALES = Path(__file__).resolve().parent / "locales"
 VARIABLE = re.compile(r"\{\s*\$(\w+)")
-# letters whose Catalan name begins with a vowel sound: a, e, efa, hac, i, ela, ema, ena,
-# o, erra, essa, u, ics (a point named O4 is read "o quatre": d'O4, l'O4)
-VOWEL_LETTERS = set("AEFHILMNORSUX")
+# the letters Catalan elides "de" and "el/la" before, as the Catalan notes write a symbol: the
+# vowels (a point named O4 is read "o quatre": d'O4, l'O4), never a consonant whose letter's
+# name happens to begin with a vowel (efa, erra, essa …): the notes write "respecte de R",
+# "fixa a R", and a page that elided d'S1 beside the model's own "de S1" wrote one name two ways
+# (issue 30, twenty-eighth round (e): C5-2.2's "de S1" ×8, "d'S1" ×2)
+VOWEL_LETTERS = set("AEIOU")
 # the renderers set the article a model's name begins with (model.wording.ARTICLES) as text, so the
 # contractions of a preposition with it apply (de el portador -> del portador)
 CONTRACTIONS = {
@@ -46,8 +49,9 @@ def fluent_id(key: str) -> str:
 def elision(value: Any) -> str:
     """`vowel` when a name is read with an initial vowel sound (Catalan elides before it).
 
-    Symbols (a capital letter, maybe with digits or primes: A, O4, AB) are read letter by
-    letter, so their first letter's name counts; words elide before a vowel or an h.
+    Symbols (a capital letter, maybe with digits or primes: A, O4, AB) elide when their
+    first letter is a vowel (`VOWEL_LETTERS`: the notes' "de R", "de P", "d'O"); words elide
+    before a vowel or an h.
     """
     text = str(getattr(value, "plain", value)).strip()
     if not text or ARTICLES["ca"].match(text):

@@ -10,7 +10,9 @@ bookkeeping (the fifth and sixth); the page then said no count at all, the only 
 without one, and two teachers asked for it (twenty-seventh round (e): "El mecanismo tiene
 dos grados de libertad (se dan v_C1 y v_C3)"). So where data that give whole velocities make
 up the difference, the page says the mobility the statement leaves, one degree for each
-datum, and that the statement gives those velocities' directions too."""
+datum. Not that the statement gives a datum's direction too (twenty-eighth round (e): "el
+enunciado da también la dirección de v_C3" read as if v_C1 had none, both given downwards
+in the Data's own lines; the Basque teacher asked for the clause to go)."""
 from __future__ import annotations
 
 from typing import Any, Optional
@@ -49,10 +51,8 @@ def datum_sym(ctx: Ctx, d: Any) -> Optional[Sym]:
 
 
 def by_data(ctx: Ctx) -> dict:
-    """The sentence's arguments: the mobility the statement leaves (one a datum), the data,
-    and those whose direction the statement gives too."""
+    """The sentence's arguments: the mobility the statement leaves (one a datum) and the data."""
     from .document import Names
 
     drivers = ctx.model.drivers
-    return {"dof": len(drivers), "data": Names([datum_sym(ctx, d) for d in drivers]),
-            "whole": Names([datum_sym(ctx, d) for d in _whole(ctx)])}
+    return {"dof": len(drivers), "data": Names([datum_sym(ctx, d) for d in drivers])}

@@ -112,7 +112,7 @@ structure-dof_data = El mecanisme té { $dof ->
         [2] dos graus
         [3] tres graus
        *[other] { $dof } graus
-    } de llibertat, un per cada dada ({ $data }); l’enunciat també dona la direcció de { $whole }.
+    } de llibertat, un per cada dada ({ $data }).
 shape-concentric = { $n ->
         [2] dues circumferències concèntriques
        *[other] { $n } circumferències concèntriques
@@ -780,7 +780,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: l’oposada { WORD($
         [accel] de l’acceleració
        *[speed] de la velocitat
     } relativa trobada al pas { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }. Les dues acceleracions relatives difereixen en els termes de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, que aquí són nuls, ja que { $vel } = 0 (contacte de rodolament).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }. Les dues acceleracions relatives no són en general exactament oposades: la seva suma és igual als termes de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nul·la aquí, ja que { $vel } = 0 (contacte de rodolament).
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)

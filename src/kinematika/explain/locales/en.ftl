@@ -85,7 +85,7 @@ structure-dof_data = The mechanism has { $dof ->
         [2] two degrees
         [3] three degrees
        *[other] { $dof } degrees
-    } of freedom, one for each datum ({ $data }); the statement gives the direction of { $whole } too.
+    } of freedom, one for each datum ({ $data }).
 shape-concentric = { $n ->
         [2] two concentric circles
        *[other] { $n } concentric circles
@@ -570,7 +570,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the r
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. The two relative accelerations differ by the Coriolis terms, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, which vanish here, since { $vel } = 0 (rolling contact).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. The two relative accelerations are not in general exactly opposite: their sum is the Coriolis terms, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, zero here, since { $vel } = 0 (rolling contact).
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)

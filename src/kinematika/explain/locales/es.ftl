@@ -91,7 +91,7 @@ structure-dof_data = El mecanismo tiene { $dof ->
         [2] dos grados
         [3] tres grados
        *[other] { $dof } grados
-    } de libertad, uno por cada dato ({ $data }); el enunciado da también la dirección de { $whole }.
+    } de libertad, uno por cada dato ({ $data }).
 shape-concentric = { $n ->
         [2] dos circunferencias concéntricas
        *[other] { $n } circunferencias concéntricas
@@ -533,7 +533,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { W
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. Las dos aceleraciones relativas difieren en los términos de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, que aquí son nulos, ya que { $vel } = 0 (contacto de rodadura).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. Las dos aceleraciones relativas no son en general exactamente opuestas: su suma es igual a los términos de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nula aquí, ya que { $vel } = 0 (contacto de rodadura).
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)

@@ -43,7 +43,7 @@ structure-subscript_drag = { $equal } { $point } puntuaren arrastre-{ WORD($kind
         [accel] azelerazioa
        *[speed] abiadura
     } da
-structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuko puntuaren abiadura da
+structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuarekin bat datorren puntuaren abiadura da
 structure-subscript_rel = { $sym } { $body } solidoaren { $kind ->
         [rate2] azelerazio angeluarra
         [speed] { $point } puntuaren abiadura
@@ -85,7 +85,7 @@ structure-dof_data = Mekanismoak { $dof ->
         [2] bi askatasun-gradu ditu
         [3] hiru askatasun-gradu ditu
        *[other] { $dof } askatasun-gradu ditu
-    }, datu bakoitzeko bat ({ $data }); enuntziatuak { $whole } abiaduraren norabidea ere ematen du.
+    }, datu bakoitzeko bat ({ $data }).
 shape-concentric = { $n ->
         [2] bi zirkunferentzia zentrokide
        *[other] { $n } zirkunferentzia zentrokide
@@ -475,12 +475,12 @@ composition-drag_seen = { $sym } = { $value }, { $frame } solidoaren { $point } 
        *[speed] abiadura
     }, { $step }. urratsean aurkitua.
 composition-drag_terms = { $sym } = { $terms } = { $value }: { $step }. urratseko ekuazioaren lehen terminoak dira.
-composition-sum_seen = Beraz, { $sym } = { $terms } da { $step }. urratsean { $seen } aurkitzeko erabilitako ekuazioa.
+composition-sum_seen = Beraz, { $step }. urratsean { $seen } aurkitzeko erabilitako ekuazioa { $sym } = { $terms } da.
 composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa. Bi azelerazio erlatiboen arteko aldea Coriolisen terminoak dira, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, eta hemen nuluak dira, { $vel } = 0 baita (errodadura-kontaktua).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa. Bi azelerazio erlatiboak ez dira, oro har, guztiz aurkakoak: haien batura Coriolisen terminoen batura da, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, eta hemen nulua da, { $vel } = 0 baita (errodadura-kontaktua).
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
@@ -490,7 +490,7 @@ vehicle-equiprojective_along = Ekiproiektibitatearen propietateagatik ({ $q } et
 vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza, { $witness } puntuan { $sym } abiadurarekiko perpendikularra ere badena: gurpila ez da alboetara irristatzen)
 vehicle-pin_shared = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } = { $other }.
 vehicle-pin_shared_one = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } bien abiadura da.
-vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira, eta zentro horrek ez du abiadurarik: { $rest } = 0; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
+vehicle-centre = { $body } solidoaren biraketa-zentro instantaneoa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira, eta zentro horrek ez du abiadurarik: { $rest } = 0; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
 vehicle-translation = { $body } solidoaren zuzenak paraleloak dira; beraz, solidoa traslatzen da: puntu guztiak { $point } bezala mugitzen dira; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
 vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }; beraz, { $body } solidoa traslatzen da: puntu guztiek { $value } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $vp } abiadurarekiko norabide perpendikularrean.
 vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $product } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:

@@ -185,7 +185,12 @@ class Renderer(ABC):
         Data's "Given: ω_wheel1 = −ω" on C5-E.3, a statement's "r ω_pinoia = R ω_platera"
         on C5-E.6, 2.1's v_{F∈furka}) is preceded by the legend's mark: the legend is said
         there, once, before the symbol is read, where the Data has just introduced the
-        body (issue 30, twenty-seventh round (g); `render`)."""
+        body (issue 30, twenty-seventh round (g); `render`). The model's statement (`Told`
+        "data": what the mechanism is, in the statement's words) is read whole first and the
+        legend follows it: a notation before the mechanism is described names bodies the
+        reader has not met (twenty-eighth round (e): C5-E.6's Data opened with "Notation:
+        ω_wheel1 … ω_{sprocket rel frame}" before the bicycle, because the statement's
+        second paragraph writes r ω_sprocket = R ω_chainring)."""
         if self._legend is not None or self._early or not hasattr(self, "_written") or isinstance(b, Section):
             return self.block(b)
         rated, members, member = set(self._rated), set(self._members), self._member
@@ -197,6 +202,8 @@ class Renderer(ABC):
         if (member is None and self._member is not None and spelt) or any(
                 not self._plain(x, self.labels().get(x, ""), spelt) for x in new if spelt):
             self._early = True
+            if isinstance(b, Told) and b.kind == "data":        # the statement first, then its notation
+                return text + "\n" + EARLY_LEGEND + "\n"
             return EARLY_LEGEND + "\n" + text
         return text
 
