@@ -432,13 +432,13 @@ centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin { $joint },
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),
 centre-joint-gear = the contact { $joint } of the pitch circles,
-centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
+centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the instant centre is perpendicular to the guide,
 centre-joint-weld = the two bodies are one rigid body:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines { $far ->
         [1] are parallel, so
        *[other] meet
     }
-centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
+centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the instant centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines { $far ->
         [1] are parallel, so
        *[other] meet
@@ -446,7 +446,7 @@ centre-lines = it lies on { $first } and on { $second }; these lines { $far ->
 centre-omega = with the velocities found in “{ sec-velocities }”, the angular velocity relative to { $frame } { COUNT($frame) ->
         [many] are
        *[one] is
-    } zero: the relative motion is a translation and the centre is
+    } zero: the relative motion is a translation and the instant centre is
 centre-at = at { $point }.
 centre-infinity = { $body } translates relative to { $frame }: every point has the velocity { $v }; its instant centre is at infinity, perpendicular to { $v }.
 centre-infinity_one = { $body } translates relative to { $frame }: every point has one velocity; its instant centre is at infinity, perpendicular to that velocity, in the direction { $direction }.
@@ -502,8 +502,8 @@ ans-inflection_point = inflection pole (across the circle from I)
 ans-pole_tangent = pole tangent (unit, the way I moves)
 ans-pole_normal = pole normal (unit, from I to the inflection pole)
 ans-pole_velocity = velocity of I along the centrodes
-centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
-centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
+centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero:
+centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
 composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($body) ->
         [many] do
@@ -703,7 +703,7 @@ higher-straight = The higher pair is written as the motion of { $point } along a
 centre-weld = { $body } { COUNT($body) ->
         [many] are
        *[one] is
-    } fixed to { $other }: they are one rigid body, so the centre is that of { $other }, { $same },
+    } fixed to { $other }: they are one rigid body, so the instant centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-rolls = the perpendicular to { $v } through { $point } ({ $roller } { COUNT($roller) ->
@@ -726,16 +726,16 @@ centre-carried-slip = {" "}({ $b } { COUNT($b) ->
         [many] do
        *[one] does
     } not slip on { $body }, so its point { $point } has the velocity of { $body } there)
-centre-carried-between = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
-centre-carried-between_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $near }:
-centre-carried-outside = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
-centre-carried-outside_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $near }:
+centre-carried-between = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero:
+centre-carried-between_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero, at { $dist } from { $near }:
+centre-carried-outside = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero:
+centre-carried-outside_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $near }:
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
-centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
-centre-rate = from { $w } (found in “{ sec-velocities }” through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
-centre-rate_step = from { $w } (found in Step { $step } through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
+centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the instant centre is
+centre-rate = from { $w } (found in “{ sec-velocities }” through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the instant centre is
+centre-rate_step = from { $w } (found in Step { $step } through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the instant centre is
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = above { $q }
 side-below = below { $q }
@@ -859,7 +859,7 @@ centre-line-normal = the common normal at the contact { $point } (the bodies sli
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = ground
 # a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
-centre-parallel-between = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
-centre-parallel-outside = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:
+centre-parallel-between = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the instant centre, and these two have opposite senses, so the instant centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
+centre-parallel-outside = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the instant centre, and these two have the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, towards { $point }: { $sym } = { $value }
