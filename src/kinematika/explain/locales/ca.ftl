@@ -583,11 +583,11 @@ centre-at = a { $point }.
 centre-infinity = { $body } es trasllada respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }: tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
+    } ({ $w } = 0): tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
 centre-infinity_one = { $body } es trasllada respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }: tots els seus punts tenen la mateixa velocitat; el seu CIR és a l’infinit, en la direcció perpendicular a aquesta velocitat, { $direction }.
+    } ({ $w } = 0): tots els seus punts tenen la mateixa velocitat; el seu CIR és a l’infinit, en la direcció perpendicular a aquesta velocitat, { $direction }.
 centre-rest = no hi ha moviment relatiu.
 sec-rates = Velocitats i acceleracions angulars
 rates-intro = Cada sòlid gira respecte del sòlid que el porta: { $w }, i, derivant en els eixos fixos, { $a }.
@@ -759,8 +759,8 @@ vehicle-centre = El CIR { ELISION($body) ->
 vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    } són paral·leles, de manera que es trasllada: tots els seus punts es mouen com { $point }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
-vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }, de manera que { $body } es trasllada: tots els seus punts tenen la velocitat { $value }; el seu CIR és a l’infinit, en la direcció perpendicular a { $vp }.
+    } són paral·leles, de manera que es trasllada: tots els seus punts es mouen com { $point }.
+vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }, de manera que { $body } es trasllada: tots els seus punts tenen la velocitat { $value }.
 vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda amb celeritat { $product }, on { $spin } és la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }

@@ -448,8 +448,8 @@ centre-omega = with the velocities found in “{ sec-velocities }”, the angula
        *[one] is
     } zero: the relative motion is a translation and the instant centre is
 centre-at = at { $point }.
-centre-infinity = { $body } translates relative to { $frame }: every point has the velocity { $v }; its instant centre is at infinity, perpendicular to { $v }.
-centre-infinity_one = { $body } translates relative to { $frame }: every point has one velocity; its instant centre is at infinity, perpendicular to that velocity, in the direction { $direction }.
+centre-infinity = { $body } translates relative to { $frame } ({ $w } = 0): every point has the velocity { $v }; its instant centre is at infinity, in the direction perpendicular to { $v }.
+centre-infinity_one = { $body } translates relative to { $frame } ({ $w } = 0): every point has one velocity; its instant centre is at infinity, in the direction { $direction }, perpendicular to that velocity.
 centre-rest = there is no relative motion.
 sec-rates = Angular velocities and accelerations
 rates-intro = Each body turns relative to the body that carries it: { $w }, and, differentiating in the fixed axes, { $a }.
@@ -547,13 +547,13 @@ vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym }
 vehicle-pin_shared_one = { $point } is the pin common to { $a } and { $b }: { $sym } is the velocity of both.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to the line joining it to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel, so { COUNT($body) ->
-        [many] they translate: every point moves as { $point }; their instant centre is at infinity
-       *[one] it translates: every point moves as { $point }; its instant centre is at infinity
-    }, perpendicular to { $v }.
+        [many] they translate: every point moves as { $point }
+       *[one] it translates: every point moves as { $point }
+    }.
 vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }, so { $body } { COUNT($body) ->
-        [many] translate: every point has the velocity { $value }; their instant centre is at infinity
-       *[one] translates: every point has the velocity { $value }; its instant centre is at infinity
-    }, perpendicular to { $vp }.
+        [many] translate: every point has the velocity { $value }
+       *[one] translates: every point has the velocity { $value }
+    }.
 vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane with the speed { $product }, where { $spin } is its spin about its axle, so:
 triad-intro = { $body } { COUNT($body) ->
         [many] are

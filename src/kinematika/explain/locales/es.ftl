@@ -420,8 +420,8 @@ centre-lines = está en { $first } y en { $second }; estas rectas { $far ->
     }
 centre-omega = con las velocidades halladas en «{ sec-velocities }», la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
-centre-infinity = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
-centre-infinity_one = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la misma velocidad; su CIR está en el infinito, en la dirección perpendicular a esa velocidad, { $direction }.
+centre-infinity = { $body } se traslada respecto de { $frame } ({ $w } = 0): todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
+centre-infinity_one = { $body } se traslada respecto de { $frame } ({ $w } = 0): todos sus puntos tienen la misma velocidad; su CIR está en el infinito, en la dirección perpendicular a esa velocidad, { $direction }.
 centre-rest = no hay movimiento relativo.
 sec-rates = Velocidades y aceleraciones angulares
 rates-intro = Cada sólido gira respecto del sólido que lo lleva: { $w }, y, derivando en los ejes fijos, { $a }.
@@ -509,8 +509,8 @@ vehicle-line-wheel_own = la perpendicular al plano de la rueda { $joint } por el
 vehicle-pin_shared = { $point } es el pasador común a { $a } y { $b }: { $sym } = { $other }.
 vehicle-pin_shared_one = { $point } es el pasador común a { $a } y { $b }: { $sym } es la velocidad de ambos.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }, que no tiene velocidad: { $rest } = 0. Cada punto de { $body } se mueve perpendicularmente a la recta que lo une con { $centre }, con celeridad proporcional a su distancia:
-vehicle-translation = Las rectas de { $body } son paralelas, así que se traslada: todos sus puntos se mueven como { $point }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
-vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }, así que { $body } se traslada: todos sus puntos tienen la velocidad { $value }; su CIR está en el infinito, en la dirección perpendicular a { $vp }.
+vehicle-translation = Las rectas de { $body } son paralelas, así que se traslada: todos sus puntos se mueven como { $point }.
+vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }, así que { $body } se traslada: todos sus puntos tienen la velocidad { $value }.
 vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda con celeridad { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.

@@ -373,8 +373,8 @@ centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek 
     }
 centre-omega = «{ sec-velocities }» atalean aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta BZIa
 centre-at = { $point } puntuan.
-centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
-centre-infinity_one = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek abiadura bera dute; biraketa-zentro instantaneoa infinituan dago, abiadura horrekiko norabide perpendikularrean, { $direction }.
+centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko ({ $w } = 0): puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
+centre-infinity_one = { $body } solidoa traslatzen da { $frame } solidoarekiko ({ $w } = 0): puntu guztiek abiadura bera dute; biraketa-zentro instantaneoa infinituan dago, abiadura horrekiko norabide perpendikularrean, { $direction }.
 centre-rest = ez dago mugimendu erlatiborik.
 sec-rates = Abiadura eta azelerazio angeluarrak
 rates-intro = Solido bakoitza daraman solidoarekiko biratzen da: { $w }, eta, ardatz finkoetan deribatuz, { $a }.
@@ -456,8 +456,8 @@ vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $p
 vehicle-pin_shared = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } = { $other }.
 vehicle-pin_shared_one = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } bien abiadura da.
 vehicle-centre = { $body } solidoaren biraketa-zentroa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira, eta zentro horrek ez du abiadurarik: { $rest } = 0; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
-vehicle-translation = { $body } solidoaren zuzenak paraleloak dira; beraz, solidoa traslatzen da: puntu guztiak { $point } bezala mugitzen dira; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
-vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }; beraz, { $body } solidoa traslatzen da: puntu guztiek { $value } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $vp } abiadurarekiko norabide perpendikularrean.
+vehicle-translation = { $body } solidoaren zuzenak paraleloak dira; beraz, solidoa traslatzen da: puntu guztiak { $point } bezala mugitzen dira.
+vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }; beraz, { $body } solidoa traslatzen da: puntu guztiek { $value } abiadura dute.
 vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $product } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.

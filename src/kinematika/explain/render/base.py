@@ -1132,11 +1132,13 @@ class Renderer(ABC):
         if c.value.get("point") is None and not c.value.get("rest"):
             # nineteenth round (b): a centre at infinity is said as the translation it is, the
             # translation first (the notes: a body whose points all have one velocity translates;
-            # its centre is at infinity, perpendicular to that velocity)
+            # its centre is at infinity, perpendicular to that velocity); twenty-eighth round (d):
+            # with ω = 0 said with the translation, as the notes do ("es trasllada")
             why = Msg(why.key, {**why.args, "far": 1})
             v = next((m.args["v"] for m in (*c.perps, *c.via) if isinstance(m, Msg) and "v" in m.args), None)
             where = Msg("centre.infinity" if v is not None else "centre.infinity_one",
                         {"body": Name(b, "body"), "frame": self.frame_name(a), "direction": Value(c.value["direction"], ""),
+                         "w": Sym("ω", b if a == self.doc_frame() else f"{b}/{a}", vector=False),
                          **({"v": v} if v is not None else {})})
         return self.message(Msg("centre.line", {"centre": name, "a": Name(a, "body"), "b": Name(b, "body"), "why": why,
                                                 "where": where}))
