@@ -3,6 +3,11 @@ teachers read them (/work/audit_r_{en,es,ca,eu}/report.md).
 
 1. The sentence that finds an instant centre from two velocities says "the instant centre"
    (es/ca: el CIR, eu: BZIa), never "the centre": the wheels' own centres lie on the same line.
+2. A translating body is said to translate with ω = 0, as the notes do; a velocity step says no
+   more, a centres' entry puts the centre "at infinity, in the direction perpendicular to v".
+3. A rate read off one component of its term ("along x: v_BK = −ω·R ⇒") prints the arm with its
+   components first, and the factor is one of them: never a length (I_{planet1}Q, 2r, 6R)
+   printed nowhere.
 """
 from __future__ import annotations
 
@@ -62,3 +67,49 @@ def test_d2_a_translating_body_says_omega_zero(name: str, lang: str) -> None:
         # C1 and C2 turn at ω about their contacts, each at r above it: v_C1 = v_C2 = (rω, 0);
         # the step finds v_O from it, and S1's centre is asked nowhere
         assert S1[lang] in page
+
+
+# ---- 3. the length used is printed with its value ------------------------------------------------------------
+ALONG = {"en": "along", "es": "según", "ca": "segons", "eu": None}
+READ_OFF = {lang: re.compile(r"(?:^|; )(?P<seg>[^\s;]+) = \((?P<x>[^;,]+)[;,] (?P<y>[^)]+)\); "
+                             + (rf"{word} (?P<axis>[xy]):" if word else r"(?P<axis>[xy]) norabidean:")
+                             + r" [^=]+ = (?P<sign>−?)(?P<rate>[^·\s]+)·(?P<factor>\([^)]+\)|\S+) ⇒")
+            for lang, word in ALONG.items()}
+ANY_ALONG = {lang: re.compile(rf"{word} [xy]:" if word else r"\b[xy] norabidean:") for lang, word in ALONG.items()}
+
+
+def _bare(part: str) -> str:
+    """A coordinate or a factor without its sign and brackets: −3·r/5 → 3·r/5, (6·R) → 6·R."""
+    return part.strip().lstrip("−").removeprefix("(").removesuffix(")")
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_d3_a_component_line_shows_its_length(name: str, lang: str) -> None:
+    """Every "along x:" line is read off an arm printed on it: SEG = (x, y); along x: the term =
+    ∓rate·|y| (the term rate k × (x, y) has the x component −rate·y and the y component rate·x)."""
+    for line in plain_page(name, lang).splitlines():
+        if not ANY_ALONG[lang].search(line):
+            continue
+        m = READ_OFF[lang].search(line)
+        assert m, line
+        used = m["y"] if m["axis"] == "x" else m["x"]
+        assert _bare(m["factor"]) == _bare(used), line
+        # the sign: along x, −rate·y; along y, +rate·x
+        negative = (m["axis"] == "x") != used.strip().startswith("−")
+        assert (m["sign"] == "−") == negative, line
+
+
+EXPECTED_ALONG = {   # (seed, the line in English), each derived from the arm of the notes' figure
+    # C5-1.4: A1 = (0, −2r) moves at 2rω, Q = (0, −3r) at −3rω: the centre is 2r/5 below A1, Q 3r/5 below it
+    ("seed_c5_1_4_epicyclic", "I_{planet1}Q = (0, −3·r/5); along x: v_{QI_{planet1}} = ω_planet1·(3·r/5) ⇒ ω_planet1 = −5·ω"),
+    # C5-1.1: the pulley's centre C is 2r above its instant centre (the rope's fixed strand)
+    ("seed_c5_1_1_pulley_on_cable", "I_{pulley}C = (0, 2·r); along x: v_{CI_{pulley}} = −ω_pulley·(2·r) ⇒ ω_pulley = −v/(2·r)"),
+    # C5-E.3: A is 6R above the rod's instant centre (0, −4R): A at (0, 2R)
+    ("seed_c5_e3_wheels_with_rod", "I_{rod}A = (0, 6·R); along x: v_{AI_{rod}} = −ω_rod·(6·R) ⇒ ω_rod = −ω/3"),
+}
+
+
+def test_d3_the_three_lines_the_spanish_reader_quoted() -> None:
+    """C5-1.1, C5-1.4, C5-E.3: the lengths 2r, 3r/5, 6R are printed where they are used."""
+    for name, line in EXPECTED_ALONG:
+        assert line in plain_page(name, "en"), (name, line)
