@@ -8,6 +8,8 @@ teachers read them (/work/audit_r_{en,es,ca,eu}/report.md).
 3. A rate read off one component of its term ("along x: v_BK = −ω·R ⇒") prints the arm with its
    components first, and the factor is one of them: never a length (I_{planet1}Q, 2r, 6R)
    printed nowhere.
+4. The Answers table has no row that answers nothing: the contact's "three coincident points
+   | position = (0, 2·r)" goes (the position is the Data's); the points' own rows stay.
 """
 from __future__ import annotations
 
@@ -113,3 +115,38 @@ def test_d3_the_three_lines_the_spanish_reader_quoted() -> None:
     """C5-1.1, C5-1.4, C5-E.3: the lengths 2r, 3r/5, 6R are printed where they are used."""
     for name, line in EXPECTED_ALONG:
         assert line in plain_page(name, "en"), (name, line)
+
+
+# ---- 4. no row that answers nothing --------------------------------------------------------------------------
+POSITION = {"en": "position", "es": "posición", "ca": "posició", "eu": "posizioa"}
+
+
+def _answers(page: str) -> list[str]:
+    """The rows of a page's Answers table (the last table of the page)."""
+    tail = page[page.rindex("| --- | --- |"):]
+    return [ln for ln in tail.splitlines()[1:] if ln.startswith("|")]
+
+
+CONTACT = {"en": "three coincident points", "es": "tres puntos coincidentes", "ca": "tres punts coincidents",
+           "eu": "bat datozen hiru puntuak"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_d4_no_answer_is_only_a_position_of_the_data(name: str, lang: str) -> None:
+    """No row of the Answers table answers the contact's question with its position alone (an
+    instant centre's position is an answer: those rows stay)."""
+    rows = [r for r in _answers(plain_page(name, lang))
+            if CONTACT[lang] in r.split("|")[1] and re.search(rf"\| {POSITION[lang]} = \([^|]*\) \|$", r)]
+    assert not rows, rows
+
+
+def test_d4_the_contact_points_rows_of_c5_1_8() -> None:
+    """C5-1.8 by hand (the notes, corrected: /work/shared/seeds/README.md): the wheel (radius r)
+    rolls on the fixed cylinder (radius 2r, centre O) at ω₀ clockwise, J = (0, 2r), C = (0, 3r):
+    the cylinder's point is at rest; the wheel's point has v = 0 and a = (2/3)·r·ω₀² towards C
+    (up); the geometric point runs on the circle of radius 2r at ω₀/3: v = (2/3)·r·ω₀ and
+    a = 2r(ω₀/3)² = (2/9)·r·ω₀² towards O (down). The first six rows, with no row before them."""
+    rows = _answers(plain_page("seed_c5_1_8_contact_points", "en"))
+    assert rows[:6] == ["| v_{J∈cylinder} | (0, 0) |", "| a_{J∈cylinder} | (0, 0) |", "| v_{J∈wheel} | (0, 0) |",
+                        "| a_{J∈wheel} | (0, 2·r·ω₀²/3) |", "| v_{J^{geom}} | (2·r·ω₀/3, 0) |",
+                        "| a_{J^{geom}} | (0, −2·r·ω₀²/9) |"], rows

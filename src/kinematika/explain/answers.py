@@ -9,7 +9,7 @@ from ..questions import QUESTIONS, answer
 from ..questions.curvature import intrinsic
 from .asked import worked
 from .context import Ctx, alpha_sym, composed, omega_sym, segment
-from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg, point as point_name
+from .document import Ann, Derived, Equation, Inline, Msg, Name, Section, Sym, Table, Term, Told, Value, msg, point as point_name
 from .paths import circle_about
 from .terms import KNOWN
 from .words import ExplainWords
@@ -76,13 +76,22 @@ def question_rows(ctx: Ctx, q, items: list) -> list[list]:
     """The question's rows of the answers table: one, labelled by what is asked; or, for a
     kind whose parts are quantities of their own (`rows_by_part`: the three coincident
     points of a contact), a row for each part labelled by its symbol, as the notes list
-    them (C5-1.8: v and a of the ground's point, the wheel's point and the geometric
-    point), after a row with what is asked and the parts without a symbol (the position)."""
+    point), after a row with what is asked and the parts without a symbol, if any answers
+    something: the contact's position is the Data's (the points' table gives it), and a row
+    "the three coincident points at the contact J | position = (0, 2·r)" answers nothing
+    (issue 30, twenty-eighth round (d): the symbols v_{J∈wheel}, v_{J^geom} say whose rows
+    follow)."""
     if not QUESTIONS[q.kind].rows_by_part:
         return [[question_label(ctx, q), items]]
     own = [(label, value) for label, value in items if isinstance(label, Sym)]
-    rest = [(label, value) for label, value in items if not isinstance(label, Sym)]
-    return [[question_label(ctx, q), rest]] + [[label, [("", value)]] for label, value in own]
+    rest = [(label, value) for label, value in items if not isinstance(label, Sym) and not _given_position(label)]
+    return ([[question_label(ctx, q), rest]] if rest else []) + [[label, [("", value)]] for label, value in own]
+
+
+def _given_position(label: Any) -> bool:
+    """A part that is the asked point's position (`ans.point`): a datum of the points' table,
+    not an answer."""
+    return isinstance(label, Msg) and label.key == "ans.point"
 
 
 def question_label(ctx: Ctx, q) -> Any:
