@@ -10,6 +10,9 @@ teachers read them (/work/audit_r_{en,es,ca,eu}/report.md).
    printed nowhere.
 4. The Answers table has no row that answers nothing: the contact's "three coincident points
    | position = (0, 2·r)" goes (the position is the Data's); the points' own rows stay.
+5. An asked planar ω or α says its sense in the Answers table when its sign is known (C5-2.1:
+   "el valor i sentit de la precessió"); a relative rate the notation writes by a letter of its
+   own (C5-2.1's δ̇) is defined in the Notation line, before "δ̇ = 0".
 """
 from __future__ import annotations
 
@@ -150,3 +153,42 @@ def test_d4_the_contact_points_rows_of_c5_1_8() -> None:
     assert rows[:6] == ["| v_{J∈cylinder} | (0, 0) |", "| a_{J∈cylinder} | (0, 0) |", "| v_{J∈wheel} | (0, 0) |",
                         "| a_{J∈wheel} | (0, 2·r·ω₀²/3) |", "| v_{J^{geom}} | (2·r·ω₀/3, 0) |",
                         "| a_{J^{geom}} | (0, −2·r·ω₀²/9) |"], rows
+
+
+# ---- 5. the precession's sense; δ̇ defined ---------------------------------------------------------------------
+CCW = {"en": "counter-clockwise", "es": "antihorario", "ca": "antihorari", "eu": "erlojuaren orratzen aurkako noranzkoan"}
+DELTA = {"en": "δ̇ is the angular velocity of the *front fork* relative to the *chassis*",
+         "es": "δ̇ es la velocidad angular de la *horquilla delantera* respecto del *chasis*",
+         "ca": "δ̇ és la velocitat angular de la *forquilla davantera* respecte del *xassís*",
+         "eu": "δ̇ *aurreko furkaren* abiadura angeluarra da *txasisarekiko*"}
+
+
+@over(name=("seed_c5_2_1_tricycle",), lang=LANGS)
+def test_d5_the_precession_with_its_sense(name: str, lang: str) -> None:
+    """C5-2.1 by hand: the rear axle's line (x = 0) and the normal to v_F at F = (L, 0), v_F along
+    (1, 1), meet at I = (0, L); F is √2·L from I and moves at v₀, so ψ̇ = v₀/(√2·L) = √2·v₀/(2·L),
+    positive: counter-clockwise (the tricycle turns to the left). δ̇, the fork's rate relative to
+    the chassis, is defined before the line that says it is zero."""
+    page = plain_page(name, lang)
+    assert f"| ψ̇ | √2·v₀/(2·L) ({CCW[lang]}) |" in page
+    assert DELTA[lang] in page
+    assert page.index(DELTA[lang]) < page.index("δ̇ = 0")
+
+
+def test_d5_numeric_rates_with_their_sense() -> None:
+    """001_r_pairs (the fifth reading's numbers, by hand): ω_N = −5.5 rad/s turns clockwise,
+    ω_P = 2 rad/s counter-clockwise; α_N = 12.25 and α_P = 35 rad/s² are counter-clockwise."""
+    rows = _answers(plain_page("seed_001_r_pairs", "en"))
+    for row in ("| ω_N | −5.5 rad/s (clockwise) |", "| ω_P | 2 rad/s (counter-clockwise) |",
+                "| α_N | 12.25 rad/s² (counter-clockwise) |", "| α_P | 35 rad/s² (counter-clockwise) |"):
+        assert row in rows, (row, rows)
+
+
+@over(name=SEEDS, lang=("en",))
+def test_d5_a_rate_of_unknown_sign_says_none(name: str, lang: str) -> None:
+    """A formula with a parameter of either sign (C5-E.1's θ̈) has no sense to say; one whose
+    parameters are all positive has: never a sense word on a row whose value has no sign."""
+    for row in _answers(plain_page(name, lang)):
+        m = re.fullmatch(r"\| [ωα]\S* \| (?P<value>[^|(]+?)(?: rad/s²?)? \((?P<sense>(counter-)?clockwise)\) \|", row)
+        if m:
+            assert m["value"].startswith("−") == (m["sense"] == "clockwise"), row

@@ -54,6 +54,14 @@ structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }
+# a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
+structure-subscript_noted_rel = { $sym } és la velocitat angular { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($other) ->
+        [vowel] d’{ $other }
+       *[other] de { $other }
+    }
 structure-subscript_drag = { $equal } és { WORD($kind) ->
         [accel] l’acceleració
        *[speed] la velocitat
@@ -683,6 +691,8 @@ ask-intrinsic = acceleració tangencial i normal { ELISION($point) ->
        *[other] de { $frame }
     }
 ans-rest = sense moviment relatiu
+# an asked planar rate with its sense, as the notes ask it (“valor i sentit”: twenty-eighth round d)
+ans-sensed = { $value } ({ $sense })
 ans-point = posició
 ans-from = distància { ELISION($point) ->
         [vowel] d’{ $point }

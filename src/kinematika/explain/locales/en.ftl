@@ -39,6 +39,8 @@ col-question = question
 col-answer = answer
 structure-subscripts = Notation: { $pairs }.
 structure-subscript_pair = { $sym } is the angular velocity of { $body }
+# a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
+structure-subscript_noted_rel = { $sym } is the angular velocity of { $body } relative to { $other }
 structure-subscript_drag = { $equal } is the drag { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
@@ -488,6 +490,8 @@ ask-decompose = composition of the motion of { $point }, moving frame { $frame }
 ask-curvature = radius of curvature of the path of { $point } relative to { $frame }
 ask-intrinsic = tangential and normal acceleration of { $point } relative to { $frame }
 ans-rest = no relative motion
+# an asked planar rate with its sense, as the notes ask it (“valor i sentit”: twenty-eighth round d)
+ans-sensed = { $value } ({ $sense })
 ans-point = position
 ans-from = distance from { $point }
 ans-direction = direction

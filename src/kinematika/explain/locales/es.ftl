@@ -39,6 +39,8 @@ col-question = pregunta
 col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
+# a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
+structure-subscript_noted_rel = { $sym } es la velocidad angular de { $body } respecto de { $other }
 structure-subscript_drag = { $equal } es la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
@@ -460,6 +462,8 @@ ask-decompose = composición del movimiento de { $point }, referencia móvil { $
 ask-curvature = radio de curvatura de la trayectoria de { $point } respecto de { $frame }
 ask-intrinsic = aceleración tangencial y normal de { $point } respecto de { $frame }
 ans-rest = sin movimiento relativo
+# an asked planar rate with its sense, as the notes ask it (“valor i sentit”: twenty-eighth round d)
+ans-sensed = { $value } ({ $sense })
 ans-point = posición
 ans-from = distancia a { $point }
 ans-direction = dirección

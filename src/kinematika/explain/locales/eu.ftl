@@ -39,6 +39,8 @@ col-question = galdera
 col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
+# a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
+structure-subscript_noted_rel = { $sym } { $body } solidoaren abiadura angeluarra da { $other } solidoarekiko
 structure-subscript_drag = { $equal } { $point } puntuaren arrastre-{ WORD($kind) ->
         [accel] azelerazioa
        *[speed] abiadura
@@ -410,6 +412,8 @@ ask-decompose = { $point } puntuaren mugimenduaren konposizioa, { $frame } erref
 ask-curvature = { $point } puntuaren ibilbidearen kurbadura-erradioa { $frame } solidoarekiko
 ask-intrinsic = { $point } puntuaren azelerazio tangentziala eta normala { $frame } solidoarekiko
 ans-rest = ez dago mugimendu erlatiborik
+# an asked planar rate with its sense, as the notes ask it (“valor i sentit”: twenty-eighth round d)
+ans-sensed = { $value } ({ $sense })
 ans-point = posizioa
 ans-from = { $point } puntura dagoen distantzia
 ans-direction = norabidea

@@ -150,6 +150,7 @@ class Renderer(ABC):
         self._written: set[str] = set()
         self._rated: set[str] = set()        # bodies whose own symbol (ω_X, α_X, I_X) is written
         self._noted: dict[str, None] = {}     # bodies whose ω the model's notation writes otherwise (ψ̇), as written
+        self._noted_rel: dict[tuple[str, str], None] = {}   # (body, other) whose relative ω it writes otherwise (δ̇)
         self._rating = False
         self._member: Optional[tuple[str, str]] = None   # the first v_{J∈b} written (`subscripts`)
         self._members: dict[str, str] = {}   # each body written after ∈, at its first point (`subscripts`)
@@ -651,6 +652,8 @@ class Renderer(ABC):
             return s
         if s.base == "ω" and len(parts) == 1 and hasattr(self, "_noted"):
             self._noted.setdefault(parts[0], None)      # the notation line defines it (`subscripts`)
+        if s.base == "ω" and len(parts) == 2 and hasattr(self, "_noted_rel"):
+            self._noted_rel.setdefault((parts[0], parts[1]), None)    # δ̇: defined there too
         w = written_name(spelt)
         return Sym(w.base, w.sub, w.sup or s.sup, s.vector, fixed=True)
 
@@ -696,6 +699,13 @@ class Renderer(ABC):
             said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
             items += (["; "] if items else []) + [said]
             defined.add(b)
+        for b, other in list(getattr(self, "_noted_rel", {})):
+            # a relative rate the model's notation writes by a letter of its own (C5-2.1's δ̇,
+            # the notes' steering rate): said as what it is, with the page's other symbols,
+            # before a step writes "δ̇ = 0" (twenty-eighth round (d): δ was defined nowhere)
+            said = Msg("structure.subscript_noted_rel", {"sym": Sym("ω", f"{b}/{other}", vector=False),
+                                                         "body": Name(b, "body"), "other": Name(other, "body")})
+            items += (["; "] if items else []) + [said]
         member = getattr(self, "_member", None)
         members = [member] if member is not None else []     # v_{J∈cylinder}: the point of the cylinder at J, once a page
         members += [(point_, of) for of, point_ in getattr(self, "_members", {}).items()
