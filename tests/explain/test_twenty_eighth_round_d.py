@@ -13,6 +13,8 @@ teachers read them (/work/audit_r_{en,es,ca,eu}/report.md).
 5. An asked planar ω or α says its sense in the Answers table when its sign is known (C5-2.1:
    "el valor i sentit de la precessió"); a relative rate the notation writes by a letter of its
    own (C5-2.1's δ̇) is defined in the Notation line, before "δ̇ = 0".
+6. C5-2.2's Data say whose spin ω′ is (the wheel C4's) where they first write it, and the
+   chassis, not the wheels, are hinged at O.
 """
 from __future__ import annotations
 
@@ -192,3 +194,22 @@ def test_d5_a_rate_of_unknown_sign_says_none(name: str, lang: str) -> None:
         m = re.fullmatch(r"\| [ωα]\S* \| (?P<value>[^|(]+?)(?: rad/s²?)? \((?P<sense>(counter-)?clockwise)\) \|", row)
         if m:
             assert m["value"].startswith("−") == (m["sense"] == "clockwise"), row
+
+
+# ---- 6. C5-2.2: ω′ is C4's spin; the chassis are hinged at O ---------------------------------------------------
+WHOSE = {"en": "the wheel C4 of S2", "es": "la rueda C4 de S2", "ca": "la roda C4 de S2", "eu": "S2-ren C4 gurpila"}
+HINGED = {"en": "its two chassis, S1 and S2, hinged at O, are identical, and so are its four wheels.",
+          "es": "sus dos chasis, S1 y S2, articulados en O, son idénticos, y sus cuatro ruedas también son iguales.",
+          "ca": "els dos xassissos, S1 i S2, articulats a O, són idèntics, i les quatre rodes també.",
+          "eu": "bi txasisak, S1 eta S2, berdinak dira eta O puntuan giltzatuta daude"}
+
+
+@over(name=("seed_c5_2_2_articulated",), lang=LANGS)
+def test_d6_omega_prime_is_said_whose_where_first_written(name: str, lang: str) -> None:
+    """C5-2.2 by hand: S2 turns about I_S2 = (0, −√2·a) at rω/(√2·a); C4 is a/2 from it and
+    C3 3a/2, so C4 spins at ω/(2√2) (the notes' ω′) and C3 at 3ω/(2√2): the first sentence
+    writing ω′ names C4 and gives C3's spin, so no student takes ω′ for both wheels."""
+    page = plain_page(name, lang)
+    first = next(ln for ln in page.splitlines() if "ω′" in ln)
+    assert WHOSE[lang] in first and "ω′ = ω/(2√2)" in first and "3ω/(2√2)" in first, first
+    assert HINGED[lang] in page
