@@ -15,6 +15,9 @@ teachers read them (/work/audit_r_{en,es,ca,eu}/report.md).
    own (C5-2.1's δ̇) is defined in the Notation line, before "δ̇ = 0".
 6. C5-2.2's Data say whose spin ω′ is (the wheel C4's) where they first write it, and the
    chassis, not the wheels, are hinged at O.
+7. A rolling contact's two relative accelerations: their SUM is the Coriolis expression, as the
+   equation writes it (never "they differ by" / "aldea"); the step whose equation has no
+   Coriolis term at the contact says why there: v_{F∈N rel R} = 0.
 """
 from __future__ import annotations
 
@@ -213,3 +216,43 @@ def test_d6_omega_prime_is_said_whose_where_first_written(name: str, lang: str) 
     first = next(ln for ln in page.splitlines() if "ω′" in ln)
     assert WHOSE[lang] in first and "ω′ = ω/(2√2)" in first and "3ω/(2√2)" in first, first
     assert HINGED[lang] in page
+
+
+# ---- 7. the two relative accelerations' sum; no Coriolis term at a rolling contact ----------------------------
+SUM = {"en": "In general the two relative accelerations are not opposite: their sum is a_{F∈R rel N} + a_{F∈N rel R} = ",
+       "es": "En general las dos aceleraciones relativas no son opuestas: su suma es a_{F∈R rel N} + a_{F∈N rel R} = ",
+       "ca": "En general les dues acceleracions relatives no són oposades: la seva suma és a_{F∈R rel N} + a_{F∈N rel R} = ",
+       "eu": "Oro har, bi azelerazio erlatiboak ez dira aurkakoak: haien batura a_{F∈R rel N} + a_{F∈N rel R} = "}
+DIFFER = ("differ by the Coriolis", "difieren en los términos de Coriolis", "difereixen en els termes de Coriolis",
+          "arteko aldea Coriolis")
+NO_CORIOLIS = {"en": "there is no Coriolis term, since at a rolling contact the two points have no relative velocity: ",
+               "es": "no hay término de Coriolis, porque en un contacto de rodadura los dos puntos no tienen velocidad "
+                     "relativa: ",
+               "ca": "no hi ha terme de Coriolis, perquè en un contacte de rodolament els dos punts no tenen velocitat "
+                     "relativa: ",
+               "eu": "ez dago Coriolisen terminorik, errodadura-kontaktu batean bi puntuek ez baitute abiadura "
+                     "erlatiborik: "}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_d7_the_relative_accelerations_sum(name: str, lang: str) -> None:
+    """a_{F∈R rel N} + a_{F∈N rel R} = 2 (ω_R − ω_N) × v_{F∈R rel N} is a sum: the words say so
+    (001_rolling_pair); and wherever a rolling contact's sentence stands, it gives v_rel = 0."""
+    page = plain_page(name, lang)
+    assert not [w for w in DIFFER if w in page]
+    for line in page.splitlines():
+        if NO_CORIOLIS[lang] in line:
+            assert re.search(re.escape(NO_CORIOLIS[lang]) + r"v_\{\w+∈\w+ rel \w+\} = 0\.", line), line
+    if name == "seed_001_rolling_pair":
+        assert SUM[lang] + "2 (ω_R − ω_N) × v_{F∈R rel N}" in page
+
+
+@over(name=("seed_001_rolling_pair",), lang=LANGS)
+def test_d7_step_3_says_why_no_coriolis(name: str, lang: str) -> None:
+    """001_rolling_pair, accelerations, Step 3: a_{F∈N} = a_A + a_FA^n + a_FA^t + a_{F∈N rel R} has
+    no Coriolis term because the roller rolls on the lever (v_{F∈N rel R} = 0): said in that step,
+    before the equation, with the relative velocity written as the equation writes its term."""
+    page = plain_page(name, lang)
+    equation = page.index("+  a_{F∈N rel R}")
+    step = page.rindex("\n### ", 0, equation)          # the step the equation stands in
+    assert NO_CORIOLIS[lang] + "v_{F∈N rel R} = 0." in page[step:equation]

@@ -378,7 +378,7 @@ rolling-glide = { $b } { COUNT($b) ->
         [many] their
        *[one] its
     } centre { $centre } keeps its distance from the edge: it moves along a line parallel to the tangent at { $point }. With axes at { $centre } turning with { $a }, the motion of { $centre } is the drag motion (that of the point of { $a } there) plus the relative motion along that line (and, for accelerations, the Coriolis term).
-rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
+rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal; there is no Coriolis term, since at a rolling contact the two points have no relative velocity: { $vrel } = 0.
 path-circle = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
@@ -539,7 +539,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the r
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. The two relative accelerations differ by the Coriolis terms, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, which vanish here, since { $vel } = 0 (rolling contact).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. In general the two relative accelerations are not opposite: their sum is { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, zero here, since { $vel } = 0 (rolling contact).
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)

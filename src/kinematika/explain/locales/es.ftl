@@ -359,7 +359,7 @@ rolling-glide = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
         } sin deslizar sobre el borde de { $a }. Visto desde { $a }, su centro { $centre } mantiene la distancia al borde: se mueve según una recta paralela a la tangente en { $point }. Con ejes en { $centre } que giran con { $a }, el movimiento de { $centre } es el de arrastre (el del punto de { $a } que coincide con él) más el relativo, a lo largo de esa recta (y, en aceleraciones, el término de Coriolis).
-rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
+rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común; no hay término de Coriolis, porque en un contacto de rodadura los dos puntos no tienen velocidad relativa: { $vrel } = 0.
 path-circle = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
@@ -502,7 +502,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { W
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. Las dos aceleraciones relativas difieren en los términos de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, que aquí son nulos, ya que { $vel } = 0 (contacto de rodadura).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. En general las dos aceleraciones relativas no son opuestas: su suma es { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nula aquí, ya que { $vel } = 0 (contacto de rodadura).
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
