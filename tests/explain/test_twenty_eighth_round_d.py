@@ -18,6 +18,7 @@ teachers read them (/work/audit_r_{en,es,ca,eu}/report.md).
 7. A rolling contact's two relative accelerations: their SUM is the Coriolis expression, as the
    equation writes it (never "they differ by" / "aldea"); the step whose equation has no
    Coriolis term at the contact says why there: v_{F∈N rel R} = 0.
+8. C5-1.4: a three-armed carrier is hinged at its centre O, not at a "midpoint".
 """
 from __future__ import annotations
 
@@ -256,3 +257,15 @@ def test_d7_step_3_says_why_no_coriolis(name: str, lang: str) -> None:
     equation = page.index("+  a_{F∈N rel R}")
     step = page.rindex("\n### ", 0, equation)          # the step the equation stands in
     assert NO_CORIOLIS[lang] + "v_{F∈N rel R} = 0." in page[step:equation]
+
+
+# ---- 8. C5-1.4: the carrier's centre ---------------------------------------------------------------------------
+CENTRE_O = {"en": "at its centre O", "es": "en su centro O", "ca": "el centre O articulat", "eu": "bere O zentroan"}
+MIDPOINT = {"en": "midpoint O", "es": "punto medio O", "ca": "punt mig O", "eu": "O erdiko puntuan"}
+
+
+@over(name=("seed_c5_1_4_epicyclic",), lang=LANGS)
+def test_d8_the_carrier_is_hinged_at_its_centre(name: str, lang: str) -> None:
+    """A carrier with three arms has a centre, where the three meet, not a midpoint."""
+    page = plain_page(name, lang)
+    assert CENTRE_O[lang] in page and MIDPOINT[lang] not in page
