@@ -133,7 +133,7 @@ SINGULAR_PRONOUN = re.compile(r"\bIts\b|\bits (?:centre|points|guide)\b|\bit tra
 # the catalogue's messages that say a pronoun of a body named in them
 PRONOUNED = {"rolling-glide": "b", "path-circle": "b", "path-line": "b", "input-revolute": "body",
              "input-prismatic": "body", "pos-turn_shift": "body", "composition-slide_seen": "body",
-             "translation-same": "body", "vehicle-translation": "body", "vehicle-translation_equal": "body",
+             "translation-same": "body", "vehicle-translation": "body",
              "what-touching": "body", "cond-prismatic": "a"}
 
 
