@@ -269,3 +269,10 @@ def test_d8_the_carrier_is_hinged_at_its_centre(name: str, lang: str) -> None:
     """A carrier with three arms has a centre, where the three meet, not a midpoint."""
     page = plain_page(name, lang)
     assert CENTRE_O[lang] in page and MIDPOINT[lang] not in page
+
+
+def test_d5_a_relative_rate_defined_once() -> None:
+    """The fan's ω₂ (the blades relative to the motor block, the model's notation): the Data's
+    sentence on relative quantities defines it, so the Notation line does not again."""
+    page = plain_page("fan_composition", "en")
+    assert page.count("the angular velocity of the *blades* relative to the *motor block*") == 1

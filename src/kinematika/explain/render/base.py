@@ -157,6 +157,7 @@ class Renderer(ABC):
         self._legend: Optional[Msg] = None
         self._rel: Optional[tuple[str, str, str, str]] = None   # the first symbol written with "rel" (`subscripts`)
         self._rel_told = False               # the data's sentence on relative quantities said "rel"
+        self._rates_told: set[str] = set()   # relative rates (b/a) that sentence defined (the fan's ω₂)
         self._rel_centres: list[Sym] = []    # instant centres written with "rel", I_{a rel b}
         self._centres_intro: Optional[tuple[str, str]] = None
         self._early = False                  # the legend stands before the first block that needs it
@@ -222,6 +223,8 @@ class Renderer(ABC):
             return CENTRES_INTRO
         if isinstance(b, Msg) and b.key == "data.relative":
             self._rel_told = True            # "rel" said before its first use: no legend for it
+            if b.args.get("rate") == "yes" and isinstance(b.args.get("w"), Sym):
+                self._rates_told.add(b.args["w"].sub)     # ω_{b rel a} defined there: not again
         if isinstance(b, Msg):
             return self.para(self.sentence(self.message(b, lead=True)))
         if isinstance(b, Equation) and b.equality:
@@ -699,7 +702,7 @@ class Renderer(ABC):
             said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
             items += (["; "] if items else []) + [said]
             defined.add(b)
-        for b, other in list(getattr(self, "_noted_rel", {})):
+        for b, other in [k for k in getattr(self, "_noted_rel", {}) if f"{k[0]}/{k[1]}" not in self._rates_told]:
             # a relative rate the model's notation writes by a letter of its own (C5-2.1's δ̇,
             # the notes' steering rate): said as what it is, with the page's other symbols,
             # before a step writes "δ̇ = 0" (twenty-eighth round (d): δ was defined nowhere)
