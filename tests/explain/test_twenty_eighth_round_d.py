@@ -220,10 +220,17 @@ def test_d6_omega_prime_is_said_whose_where_first_written(name: str, lang: str) 
 
 
 # ---- 7. the two relative accelerations' sum; no Coriolis term at a rolling contact ----------------------------
-SUM = {"en": "In general the two relative accelerations are not opposite: their sum is a_{F∈R rel N} + a_{F∈N rel R} = ",
-       "es": "En general las dos aceleraciones relativas no son opuestas: su suma es a_{F∈R rel N} + a_{F∈N rel R} = ",
-       "ca": "En general les dues acceleracions relatives no són oposades: la seva suma és a_{F∈R rel N} + a_{F∈N rel R} = ",
-       "eu": "Oro har, bi azelerazio erlatiboak ez dira aurkakoak: haien batura a_{F∈R rel N} + a_{F∈N rel R} = "}
+# a_{F∈R} = a_{F∈N} + a_{F∈R rel N} + 2 ω_N × v_{F∈R rel N} and a_{F∈N} = a_{F∈R} + a_{F∈N rel R}
+# + 2 ω_R × v_{F∈N rel R}, with v_{F∈N rel R} = −v_{F∈R rel N}: adding, the relative accelerations'
+# sum is −(the two Coriolis terms) = 2 (ω_R − ω_N) × v_{F∈R rel N}
+SUM = {"en": "In general the two relative accelerations are not opposite: their sum is the opposite of the sum of the "
+             "two Coriolis terms, a_{F∈R rel N} + a_{F∈N rel R} = ",
+       "es": "En general las dos aceleraciones relativas no son opuestas: su suma es la opuesta de la suma de los dos "
+             "términos de Coriolis, a_{F∈R rel N} + a_{F∈N rel R} = ",
+       "ca": "En general les dues acceleracions relatives no són oposades: la seva suma és l’oposada de la suma dels dos "
+             "termes de Coriolis, a_{F∈R rel N} + a_{F∈N rel R} = ",
+       "eu": "Oro har, bi azelerazio erlatiboak ez dira aurkakoak: haien batura bi Coriolisen terminoen baturaren "
+             "aurkakoa da, a_{F∈R rel N} + a_{F∈N rel R} = "}
 DIFFER = ("differ by the Coriolis", "difieren en los términos de Coriolis", "difereixen en els termes de Coriolis",
           "arteko aldea Coriolis")
 NO_CORIOLIS = {"en": "there is no Coriolis term, since at a rolling contact the two points have no relative velocity: ",
