@@ -149,9 +149,10 @@ def test_the_right_wheels_rate_is_derived_and_answered(lang):
     (counter-clockwise), from its own equation at K, and in the answers after the left wheel's."""
     page = rendered("seed_c5_e4_upper_wheel", lang, "md", drawings=False)
     right, left = f"ω_{RIGHT[lang]}", f"ω_{LEFT[lang]}"
-    assert f"v_A2K = −{right}·KA2 ⇒ {right} = v/R" in page      # its x component (twenty-fifth round d)
-    assert f"| {right} | v/R |" in page
-    assert page.index(f"| {left} | v/R |") < page.index(f"| {right} | v/R |")
+    # its x component (twenty-fifth round d), the arm KA2 = (0, R) written first (twenty-eighth round d)
+    assert re.search(rf"KA2 = \(0[,;] R\); [^:]+: v_A2K = −{right}·R ⇒ {right} = v/R", page)
+    # with its sense, positive: counter-clockwise (twenty-eighth round d)
+    assert page.index(f"| {left} | v/R (") < page.index(f"| {right} | v/R (")
 
 
 # ---- 6. the axle that is the witness's perpendicular, said once ----------------------------

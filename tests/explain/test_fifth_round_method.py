@@ -142,7 +142,7 @@ def test_the_third_pulley_centre_is_the_midpoint():
     x, y = (sympy.sympify(c) for c in note.value["point"])
     assert sympy.simplify(x - sympy.Rational(9, 2) * r) == 0 and sympy.simplify(y + 4 * r) == 0
     eu = rendered("seed_c5_1_5_pulley_block", "eu", drawings=False)
-    assert "zentroa bien artean dago" in eu and "C3 puntutik r/2 distantziara" in eu   # eleventh round: the distance plainly
+    assert "BZIa bien artean dago" in eu and "C3 puntutik r/2 distantziara" in eu   # eleventh round: the distance plainly
 
 
 # -- C5-1.2: a part welded to the frame is the frame ----------------------------------------------------------------

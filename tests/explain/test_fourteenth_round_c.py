@@ -90,8 +90,8 @@ def test_a_centre_says_its_side_and_nothing_more(name, lang):
 
 @pytest.mark.parametrize("lang,said", [
     ("ca", "= √17·r d’A, per sobre i a la dreta d’A, de manera que el CIR és a (8·r; 2·r)."),
-    ("en", "= √17·r from A, above and to the right of A, so the centre is at (8·r, 2·r)."),
-    ("eu", "= √17·r distantziara, A puntuaren gainean eta eskuinean; beraz, zentroa (8·r; 2·r) puntuan."),
+    ("en", "= √17·r from A, above and to the right of A, so the instant centre is at (8·r, 2·r)."),
+    ("eu", "= √17·r distantziara, A puntuaren gainean eta eskuinean; beraz, BZIa (8·r; 2·r) puntuan."),
 ])
 def test_the_belts_centre_by_hand(lang, said):
     """C5-1.6: ω = −ω k, v_A = (−rω, 4rω): AI = ω × v_A / ω² = (4r, r), above and right of

@@ -82,10 +82,11 @@ def test_a_centre_at_infinity_is_the_instant_centre(name):
 
 
 def test_articulated_translates_by_hand():
-    """C5-2.2: C1 and C2 have one velocity, so S1 translates; its instant centre is at
-    infinity, perpendicular to that velocity (the translation first: nineteenth round b)."""
-    assert ("so the *chassis S1* translates: every point has the velocity (r·ω, 0); its instant centre is at "
-            "infinity, perpendicular to v_C1.") in _text("seed_c5_2_2_articulated", "en")
+    """C5-2.2: C1 and C2 have one velocity, so S1 translates, ω_S1 = 0 (twenty-eighth round (d):
+    the velocity step says the translation and ω = 0, as the notes do, not where the centre is)."""
+    page = _text("seed_c5_2_2_articulated", "en")
+    assert "so the *chassis S1* translates: every point has the velocity (r·ω, 0)." in page
+    assert "ω_S1 = 0 (it translates)" in page
 
 
 # 4. a centre written one way in Markdown ------------------------------------------------------

@@ -66,7 +66,7 @@ def test_the_bicycle_rear_hub_by_hand():
     assert sympy.simplify(alpha + vd / r) == 0
     page = rendered("seed_c5_e6_bicycle", "eu", drawings=False)
     assert re.search(r"^a_H\s+=\s+α_gurpila1 × G-?H\s*$", page, re.M)       # gurpila1: 27th round (g)
-    assert re.search(r"x norabidean: a_H = −α_gurpila1·G-?H ⇒ α_gurpila1 = −v̇/R_gurpila", page)
+    assert re.search(r"G-?H = \(0; R_gurpila\); x norabidean: a_H = −α_gurpila1·R_gurpila ⇒ α_gurpila1 = −v̇/R_gurpila", page)
 
 
 # -- 001's rolling pair: the contact section refers to what step 3 wrote ----------------------------------------------

@@ -83,12 +83,12 @@ def test_d_the_bicycle_rear_wheel_by_hand() -> None:
     its centre F moves as H, R_wheel above its contact."""
     pages = {lang: rendered("seed_c5_e6_bicycle", lang, drawings=False) for lang in LANGS}
     # the rear wheel is wheel 1 and the front wheel 2 of the page's notation line (27th round (g))
-    assert "along x: a_H = −α_wheel1·GH ⇒ α_wheel1 = −v̇/R_wheel" in pages["en"]
-    assert "along x: v_HG = −ω_wheel1·GH ⇒ ω_wheel1 = −v/R_wheel" in pages["en"]
-    assert "along x: a_F = −α_wheel2·JF ⇒ α_wheel2 = −v̇/R_wheel" in pages["en"]    # its own equation (round 27b)
-    assert "segons x: a_H = −α_roda1·GH ⇒ α_roda1 = −v̇/R_roda" in pages["ca"]
-    assert "según x: a_H = −α_rueda1·GH ⇒ α_rueda1 = −v̇/R_rueda" in pages["es"]
-    assert "x norabidean: a_H = −α_gurpila1·GH ⇒ α_gurpila1 = −v̇/R_gurpila" in pages["eu"]
+    assert "GH = (0, R_wheel); along x: a_H = −α_wheel1·R_wheel ⇒ α_wheel1 = −v̇/R_wheel" in pages["en"]
+    assert "GH = (0, R_wheel); along x: v_HG = −ω_wheel1·R_wheel ⇒ ω_wheel1 = −v/R_wheel" in pages["en"]
+    assert "JF = (0, R_wheel); along x: a_F = −α_wheel2·R_wheel ⇒ α_wheel2 = −v̇/R_wheel" in pages["en"]    # its own equation (round 27b)
+    assert "GH = (0; R_roda); segons x: a_H = −α_roda1·R_roda ⇒ α_roda1 = −v̇/R_roda" in pages["ca"]
+    assert "GH = (0; R_rueda); según x: a_H = −α_rueda1·R_rueda ⇒ α_rueda1 = −v̇/R_rueda" in pages["es"]
+    assert "GH = (0; R_gurpila); x norabidean: a_H = −α_gurpila1·R_gurpila ⇒ α_gurpila1 = −v̇/R_gurpila" in pages["eu"]
     for page in pages.values():
         assert "|a_H|" not in page and "|v_HG|" not in page
 
@@ -101,8 +101,8 @@ def test_d_the_cavity_and_an_oblique_arm_by_hand() -> None:
     = (3√3·r/10, 3r/10); v_S = 3rω at −60°: (3rω/2, −3√3·rω/2); along x 3rω/2 = −ω₂·(3r/10),
     ω₂ = −5ω, written "−ω·(3·r/10)"."""
     e1 = rendered("seed_c5_e1_cavity", "en", drawings=False)
-    assert "along x: a_C^t = α_wheels·JC ⇒ α_wheels = −2·θ̈" in e1
-    assert "along x: v_CJ = ω_wheels·JC ⇒ ω_wheels = −2·θ̇" in e1
+    assert "JC = (0, −R); along x: a_C^t = α_wheels·R ⇒ α_wheels = −2·θ̈" in e1
+    assert "JC = (0, −R); along x: v_CJ = ω_wheels·R ⇒ ω_wheels = −2·θ̇" in e1
     planets = rendered("seed_c5_1_4_epicyclic", "en", drawings=False)
     assert ("I_{planet2}S = (3·√3·r/10, 3·r/10); along x: v_{SI_{planet2}} = −ω_planet2·(3·r/10) "
             "⇒ ω_planet2 = −5·ω") in planets

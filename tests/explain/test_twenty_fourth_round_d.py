@@ -95,8 +95,8 @@ def test_d_the_wheels_are_steps_of_their_own() -> None:
     in Step 1 of C5-1.2, the right wheel's ω read off v_Q = v_{K2∈wheel} + v_QK2 right after."""
     parts = _parts("seed_c5_e6_bicycle", "en")
     assert "3. The *front wheel*, from the *ground* and the *frame*." in parts["sec.structure"]
-    for level, line in (("sec.velocities", "along x: v_FJ = −ω_wheel2·JF ⇒ ω_wheel2 = −v/R_wheel"),
-                        ("sec.accelerations", "along x: a_F = −α_wheel2·JF ⇒ α_wheel2 = −v̇/R_wheel")):
+    for level, line in (("sec.velocities", "JF = (0, R_wheel); along x: v_FJ = −ω_wheel2·R_wheel ⇒ ω_wheel2 = −v/R_wheel"),
+                        ("sec.accelerations", "JF = (0, R_wheel); along x: a_F = −α_wheel2·R_wheel ⇒ α_wheel2 = −v̇/R_wheel")):
         step = parts[level].split("### Step 3: the *front wheel*\n")[1].split("### Step 4")[0]
         assert line in step, level
         assert ("v_F = v_H" if level == "sec.velocities" else "a_F = a_H") in parts[level].split("### Step 2")[0]

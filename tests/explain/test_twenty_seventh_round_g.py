@@ -187,7 +187,7 @@ def test_g_the_pulley_by_hand() -> None:
     page = plain_page("seed_c5_1_1_pulley_on_cable", "eu")
     assert re.search(r"^v_C +=  v_\{I_\{polea\}\}  \+  v_\{CI_\{polea\}\}$", page, re.M)
     assert "v_{CI_{polea}} = ω_polea × I_{polea}C = (v; 0)" in page
-    assert "x norabidean: v_{CI_{polea}} = −ω_polea·I_{polea}C ⇒ ω_polea = −v/(2·r)" in page
+    assert "I_{polea}C = (0; 2·r); x norabidean: v_{CI_{polea}} = −ω_polea·(2·r) ⇒ ω_polea = −v/(2·r)" in page
 
 
 # ---- the figures: a centre's label by its own ring -------------------------------------------------------------

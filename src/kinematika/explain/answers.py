@@ -9,7 +9,7 @@ from ..questions import QUESTIONS, answer
 from ..questions.curvature import intrinsic
 from .asked import worked
 from .context import Ctx, alpha_sym, composed, omega_sym, segment
-from .document import Ann, Derived, Equation, Inline, Name, Section, Sym, Table, Term, Told, Value, msg, point as point_name
+from .document import Ann, Derived, Equation, Inline, Msg, Name, Section, Sym, Table, Term, Told, Value, msg, point as point_name
 from .paths import circle_about
 from .terms import KNOWN
 from .words import ExplainWords
@@ -76,13 +76,22 @@ def question_rows(ctx: Ctx, q, items: list) -> list[list]:
     """The question's rows of the answers table: one, labelled by what is asked; or, for a
     kind whose parts are quantities of their own (`rows_by_part`: the three coincident
     points of a contact), a row for each part labelled by its symbol, as the notes list
-    them (C5-1.8: v and a of the ground's point, the wheel's point and the geometric
-    point), after a row with what is asked and the parts without a symbol (the position)."""
+    point), after a row with what is asked and the parts without a symbol, if any answers
+    something: the contact's position is the Data's (the points' table gives it), and a row
+    "the three coincident points at the contact J | position = (0, 2·r)" answers nothing
+    (issue 30, twenty-eighth round (d): the symbols v_{J∈wheel}, v_{J^geom} say whose rows
+    follow)."""
     if not QUESTIONS[q.kind].rows_by_part:
         return [[question_label(ctx, q), items]]
     own = [(label, value) for label, value in items if isinstance(label, Sym)]
-    rest = [(label, value) for label, value in items if not isinstance(label, Sym)]
-    return [[question_label(ctx, q), rest]] + [[label, [("", value)]] for label, value in own]
+    rest = [(label, value) for label, value in items if not isinstance(label, Sym) and not _given_position(label)]
+    return ([[question_label(ctx, q), rest]] if rest else []) + [[label, [("", value)]] for label, value in own]
+
+
+def _given_position(label: Any) -> bool:
+    """A part that is the asked point's position (`ans.point`): a datum of the points' table,
+    not an answer."""
+    return isinstance(label, Msg) and label.key == "ans.point"
 
 
 def question_label(ctx: Ctx, q) -> Any:
@@ -94,7 +103,8 @@ def question_label(ctx: Ctx, q) -> Any:
 def answer_items(ctx: Ctx, q, value: Any) -> list:
     """The answer as [(label, Value)]: a label is a symbol or a message, never a raw key."""
     if not isinstance(value, dict):
-        return [("", _value(ctx, value, UNITS.get(QUESTIONS[q.kind].unit_kind) or ""))]
+        found = _value(ctx, value, UNITS.get(QUESTIONS[q.kind].unit_kind) or "")
+        return [("", _sensed(ctx, q, found))]
     if value.get("rest"):
         return [("", msg("ans.rest"))]
     if value.get("translation"):
@@ -109,6 +119,36 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
         elif v is not None and key != "rest":
             out.append((_part_label(ctx, q, key, None), _value(ctx, v, UNITS.get(key) or "")))
     return out
+
+
+def _sensed(ctx: Ctx, q, found: Value) -> Any:
+    """A planar body's ω or α with its sense, counter-clockwise or clockwise, as the notes ask
+    it ("el valor i sentit de la precessió", C5-2.1: ψ̇ = √2·v₀/(2·L) (counter-clockwise)):
+    the sign of a number, or of a formula whose sign its symbols fix (the model's positive
+    parameters, v₀ and L: −v/R is clockwise; −2·θ̈ with θ̈ of either sign has no sense to
+    say); a zero rate has none."""
+    kind = QUESTIONS[q.kind]
+    if not ctx.planar or kind.unit_kind not in ("omega", "alpha") or kind.about != "body":
+        return found
+    sign = _sign_fixed(ctx, found.value)
+    if sign == 0:
+        return found
+    return msg("ans.sensed", value=Value(found.value, found.unit, True), sense=msg("sense.ccw" if sign > 0 else "sense.cw"))
+
+
+def _sign_fixed(ctx: Ctx, value: Any) -> int:
+    """+1 or −1 when a scalar's sign is known whatever its symbols' values (a number; a
+    formula positive or negative for every value of its positive parameters), else 0."""
+    import sympy
+
+    if getattr(value, "free_symbols", None):
+        expr = sympy.sympify(value)
+        return 1 if expr.is_positive else (-1 if expr.is_negative else 0)
+    try:
+        x = float(ctx.num(value))
+    except (TypeError, ValueError):
+        return 0
+    return (x > 0) - (x < 0)
 
 
 def _part_label(ctx: Ctx, q, key: str, sub: str | None) -> Any:

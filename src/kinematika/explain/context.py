@@ -316,15 +316,16 @@ def read_off(ctx: "Ctx", term: Sym, length: Any, value: Any) -> list:
 
 def read_along(ctx: "Ctx", term: Sym, length: Any, rate: Sym, arm: Optional[tuple]) -> Optional[list]:
     """How a rate is read off its term on a symbolic page: from one component of the term,
-    "along x: a_H = −α·GH ⇒ " (written before the rate, `Derived.lead`), never from a
+    "along x: a_H = −α·R ⇒ " (written before the rate, `Derived.lead`), never from a
     magnitude, −|a_H| / GH, which holds only for the sense the figure shows when the data are
     symbols of any value (issue 30, twenty-fifth round d). With the term = rate k × arm and
-    arm = (x, y), the term's x component is −rate·y and its y component rate·x: an arm along
-    an axis is written by its segment (GH), an oblique one by the component that multiplies
-    the rate, the simpler of the two, in brackets unless one symbol (along y: v_NP =
-    −ω·(R/2)), the arm's components written before it (KS = (√3·r, r); along x: v_SK =
-    −ω·r ⇒: the factor read off them). None on a numeric page (a known number's magnitude is its value, `read_off`)
-    and in 3D."""
+    arm = (x, y), the term's x component is −rate·y and its y component rate·x: the component
+    read is the one that multiplies the rate by the simpler factor (an arm along an axis: its
+    one nonzero coordinate), in brackets unless one symbol (along y: v_NP = −ω·(R/2)), and
+    the arm's components are written first, so that the factor is read off them: GH = (0, R);
+    along x: a_H = −α·R ⇒ (twenty-eighth round (d): a reader must see the length used with its
+    value, never "along x: v_QI = ω·IQ" with IQ = 3r/5 printed nowhere). None on a numeric
+    page (a known number's magnitude is its value, `read_off`) and in 3D."""
     if not ctx.symbolic or arm is None or len(arm) != 2:
         return None
     try:
@@ -334,23 +335,21 @@ def read_along(ctx: "Ctx", term: Sym, length: Any, rate: Sym, arm: Optional[tupl
     size = (x * x + y * y) ** 0.5
     if size == 0:
         return None
-    if abs(x) <= 1e-9 * size or abs(y) <= 1e-9 * size:
-        axis, sign = ("x", -1 if y > 0 else 1) if abs(x) <= 1e-9 * size else ("y", 1 if x > 0 else -1)
-        factor: list = [length]
-    else:
-        import sympy
+    import sympy
 
-        parts = {"x": (-1 if y > 0 else 1, abs(sympy.sympify(arm[1]))), "y": (1 if x > 0 else -1, abs(sympy.sympify(arm[0])))}
+    parts = {"x": (-1 if y > 0 else 1, abs(sympy.sympify(arm[1]))), "y": (1 if x > 0 else -1, abs(sympy.sympify(arm[0])))}
+    if abs(x) <= 1e-9 * size:
+        axis = "x"
+    elif abs(y) <= 1e-9 * size:
+        axis = "y"
+    else:
         axis = min(parts, key=lambda k: (sympy.count_ops(parts[k][1]), k))
-        sign, part = parts[axis][0], sympy.simplify(parts[axis][1])
-        value = Value(part, "len")
-        factor = [value] if part.is_Symbol else ["(", value, ")"]
-        # the arm's components first, so that the factor is read off them (a reader met
-        # "along x: v_SK = −ω·r" with KS = 2·r and asked where r came from)
-        arm_is = [length, " = ", Value(ctx.clean(tuple(arm), "len"), "len"), "; "]
-        return [*arm_is, Msg("readoff.along_x" if axis == "x" else "readoff.along_y", {}), " ", term, " = ",
-                "−" if sign < 0 else "", rate, "·", *factor, " ⇒ "]
-    return [Msg("readoff.along_x" if axis == "x" else "readoff.along_y", {}), " ", term, " = ", "−" if sign < 0 else "", rate, "·", *factor, " ⇒ "]
+    sign, part = parts[axis][0], sympy.simplify(parts[axis][1])
+    value = Value(part, "len")
+    factor = [value] if part.is_Symbol else ["(", value, ")"]
+    arm_is = [length, " = ", Value(ctx.clean(tuple(arm), "len"), "len"), "; "]
+    return [*arm_is, Msg("readoff.along_x" if axis == "x" else "readoff.along_y", {}), " ", term, " = ",
+            "−" if sign < 0 else "", rate, "·", *factor, " ⇒ "]
 
 
 def _sign(ctx: "Ctx", value: Any) -> int:

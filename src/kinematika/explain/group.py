@@ -42,7 +42,7 @@ from .given import whole_along
 from .kin import kin
 from .kinds import (by_centre_path, meshes, roller, crossed_by_a_slot, guided, kind_key, knife_edge, on_fixed_line, pin_only, rolls,
                     same_rate, slider, welds)
-from .terms import contact_term, guide, point_term, rotation_terms, slide_terms
+from .terms import contact_term, guide, point_term, relative_name, rotation_terms, slide_terms
 
 MAX_TURNS = 3           # rotations along one route at most
 TOL = 1e-9              # relative: zero lengths
@@ -1268,7 +1268,9 @@ class Writer:
             key = "rolling.noslip" if lv == "v" else "rolling.kept"
             rolling, on = roller(self.ctx.model, j)
             return [msg(key, joint=joint_name(j.id), a=body_name(on), b=body_name(rolling), gear=meshes(j),
-                        point=point_name(self.ctx.contact(j)))]
+                        point=point_name(self.ctx.contact(j)),
+                        vrel=Sym("v", relative_name(self.ctx.contact(j), *((s.body, j.a if s.body == j.b else j.b)
+                                                                           if s.body in (j.a, j.b) else (j.b, j.a)))))]
         if knife_edge(j):
             return [msg("group.wheel_v" if lv == "v" else "group.wheel_a", joint=joint_name(j.id),
                         point=point_name(j.point_at()), body=body_name(j.b), w=omega_sym(j.b), v=Sym("v", self.label(s)))]

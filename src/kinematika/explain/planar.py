@@ -23,7 +23,7 @@ from .given import driven, sign_of, heading, speeding, whole_along
 from .kinds import kind_key, meshes, pin_only, roller, rolls, turns
 from .order import Step, as_found, merge_vehicles
 from .structure import step_title
-from .terms import contact_term, guide, point_term, rotation_terms, slide_terms, target_term
+from .terms import contact_term, guide, point_term, relative_name, rotation_terms, slide_terms, target_term
 from .triad import triad_steps
 from .vehicles import spins, wheel_route
 
@@ -288,7 +288,8 @@ class PlanarSteps:
                       Ann("?"), Ann("?"), unknown=True, kind="point")
         eq = Equation(target, [sides[0], sides[1] + [rel]], "a", ctx.ref(name, j.b), position=contact.point)
         rolling, on = roller(ctx.model, j)
-        return [msg("rolling.kept", joint=joint(j.id), a=body(on), b=body(rolling), point=point(name))] + \
+        return [msg("rolling.kept", joint=joint(j.id), a=body(on), b=body(rolling), point=point(name),
+                    vrel=Sym("v", relative_name(name, j.b, j.a)))] + \
             geometric_blocks(ctx, j, self.geometric) + [eq]
 
     def contact_name(self, j: Joint) -> str:

@@ -54,6 +54,14 @@ structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
     }
+# a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
+structure-subscript_noted_rel = { $sym } és la velocitat angular { ELISION($body) ->
+        [vowel] d’{ $body }
+       *[other] de { $body }
+    } respecte { ELISION($other) ->
+        [vowel] d’{ $other }
+       *[other] de { $other }
+    }
 structure-subscript_drag = { $equal } és { WORD($kind) ->
         [accel] l’acceleració
        *[speed] la velocitat
@@ -531,7 +539,7 @@ rolling-kept = el contacte es manté: a { $point } les acceleracions dels punts 
     } i { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
-    } només difereixen en un terme segons la normal comuna.
+    } només difereixen en un terme segons la normal comuna; no hi ha terme de Coriolis, perquè en un contacte de rodolament els dos punts no tenen velocitat relativa: { $vrel } = 0.
 path-circle = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
@@ -630,11 +638,11 @@ centre-at = a { $point }.
 centre-infinity = { $body } es trasllada respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }: tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
+    } ({ $w } = 0): tots els seus punts tenen la velocitat { $v }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
 centre-infinity_one = { $body } es trasllada respecte { ELISION($frame) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
-    }: tots els seus punts tenen la mateixa velocitat; el seu CIR és a l’infinit, en la direcció perpendicular a aquesta velocitat, { $direction }.
+    } ({ $w } = 0): tots els seus punts tenen la mateixa velocitat; el seu CIR és a l’infinit, en la direcció perpendicular a aquesta velocitat, { $direction }.
 centre-rest = no hi ha moviment relatiu.
 sec-rates = Velocitats i acceleracions angulars
 rates-intro = Cada sòlid gira respecte del sòlid que el porta: { $w }, i, derivant en els eixos fixos, { $a }.
@@ -730,6 +738,8 @@ ask-intrinsic = acceleració tangencial i normal { ELISION($point) ->
        *[other] de { $frame }
     }
 ans-rest = sense moviment relatiu
+# an asked planar rate with its sense, as the notes ask it (“valor i sentit”: twenty-eighth round d)
+ans-sensed = { $value } ({ $sense })
 ans-point = posició
 ans-from = distància { ELISION($point) ->
         [vowel] d’{ $point }
@@ -780,7 +790,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: l’oposada { WORD($
         [accel] de l’acceleració
        *[speed] de la velocitat
     } relativa trobada al pas { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }. Les dues acceleracions relatives no són en general exactament oposades: la seva suma és igual als termes de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nul·la aquí, ja que { $vel } = 0 (contacte de rodolament).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }. En general les dues acceleracions relatives no són oposades: la seva suma és l’oposada de la suma dels dos termes de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nul·la aquí, ja que { $vel } = 0 (contacte de rodolament).
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
@@ -806,8 +816,8 @@ vehicle-centre = El CIR { ELISION($body) ->
 vehicle-translation = Les rectes { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
-    } són paral·leles, de manera que es trasllada: tots els seus punts es mouen com { $point }; el seu CIR és a l’infinit, en la direcció perpendicular a { $v }.
-vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }, de manera que { $body } es trasllada: tots els seus punts tenen la velocitat { $value }; el seu CIR és a l’infinit, en la direcció perpendicular a { $vp }.
+    } són paral·leles, de manera que es trasllada: tots els seus punts es mouen com { $point }.
+vehicle-translation_equal = { $p } i { $q } tenen la mateixa velocitat, { $vp } = { $vq } = { $value }, de manera que { $body } es trasllada: tots els seus punts tenen la velocitat { $value }.
 vehicle-spin = La roda { $joint } rodola sense lliscar (radi { $radius }): el seu centre { $point } es mou en el pla de la roda amb celeritat { $product }, on { $spin } és la seva rotació pròpia al voltant del seu eix, de manera que:
 triad-intro = { $body } està subjectat per tres barres binàries, { $links }: cap equació vectorial d’un sol punt no té només dues incògnites. Com fan els textos per a una tríada, es pren el punt d’Assur { $point }, on es tallen les rectes { $l1 } i { $l3 }, com a punt { ELISION($body) ->
         [vowel] d’{ $body }

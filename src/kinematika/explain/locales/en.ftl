@@ -39,6 +39,8 @@ col-question = question
 col-answer = answer
 structure-subscripts = Notation: { $pairs }.
 structure-subscript_pair = { $sym } is the angular velocity of { $body }
+# a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
+structure-subscript_noted_rel = { $sym } is the angular velocity of { $body } relative to { $other }
 structure-subscript_drag = { $equal } is the drag { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
@@ -411,7 +413,7 @@ rolling-glide = { $b } { COUNT($b) ->
         [many] their
        *[one] its
     } centre { $centre } keeps its distance from the edge: it moves along a line parallel to the tangent at { $point }. With axes at { $centre } turning with { $a }, the motion of { $centre } is the drag motion (that of the point of { $a } there) plus the relative motion along that line (and, for accelerations, the Coriolis term).
-rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal.
+rolling-kept = the contact is kept: at { $point } the accelerations of the material points of { $b } and { $a } differ only by a term along the common normal; there is no Coriolis term, since at a rolling contact the two points have no relative velocity: { $vrel } = 0.
 path-circle = { $b } { COUNT($b) ->
         [many] roll
        *[one] rolls
@@ -467,13 +469,13 @@ centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin { $joint },
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),
 centre-joint-gear = the contact { $joint } of the pitch circles,
-centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the centre is perpendicular to the guide,
+centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the instant centre is perpendicular to the guide,
 centre-joint-weld = the two bodies are one rigid body:
 centre-kennedy = by Aronhold–Kennedy it lies on the line through { $l1 } (third body { $k1 }) and on the line through { $l2 } (third body { $k2 }); these lines { $far ->
         [1] are parallel, so
        *[other] meet
     }
-centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the centre; the perpendiculars meet
+centre-velocities = the velocities relative to { $frame } of { $p }, { $vp }, and of { $q }, { $vq }, are perpendicular to the lines joining them to the instant centre; the perpendiculars meet
 centre-lines = it lies on { $first } and on { $second }; these lines { $far ->
         [1] are parallel, so
        *[other] meet
@@ -481,10 +483,10 @@ centre-lines = it lies on { $first } and on { $second }; these lines { $far ->
 centre-omega = with the velocities found in “{ sec-velocities }”, the angular velocity relative to { $frame } { COUNT($frame) ->
         [many] are
        *[one] is
-    } zero: the relative motion is a translation and the centre is
+    } zero: the relative motion is a translation and the instant centre is
 centre-at = at { $point }.
-centre-infinity = { $body } translates relative to { $frame }: every point has the velocity { $v }; its instant centre is at infinity, perpendicular to { $v }.
-centre-infinity_one = { $body } translates relative to { $frame }: every point has one velocity; its instant centre is at infinity, perpendicular to that velocity, in the direction { $direction }.
+centre-infinity = { $body } translates relative to { $frame } ({ $w } = 0): every point has the velocity { $v }; its instant centre is at infinity, in the direction perpendicular to { $v }.
+centre-infinity_one = { $body } translates relative to { $frame } ({ $w } = 0): every point has one velocity; its instant centre is at infinity, in the direction { $direction }, perpendicular to that velocity.
 centre-rest = there is no relative motion.
 sec-rates = Angular velocities and accelerations
 rates-intro = Each body turns relative to the body that carries it: { $w }, and, differentiating in the fixed axes, { $a }.
@@ -523,6 +525,8 @@ ask-decompose = composition of the motion of { $point }, moving frame { $frame }
 ask-curvature = radius of curvature of the path of { $point } relative to { $frame }
 ask-intrinsic = tangential and normal acceleration of { $point } relative to { $frame }
 ans-rest = no relative motion
+# an asked planar rate with its sense, as the notes ask it (“valor i sentit”: twenty-eighth round d)
+ans-sensed = { $value } ({ $sense })
 ans-point = position
 ans-from = distance from { $point }
 ans-direction = direction
@@ -537,8 +541,8 @@ ans-inflection_point = inflection pole (across the circle from I)
 ans-pole_tangent = pole tangent (unit, the way I moves)
 ans-pole_normal = pole normal (unit, from I to the inflection pole)
 ans-pole_velocity = velocity of I along the centrodes
-centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
-centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
+centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero:
+centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
 composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($body) ->
         [many] do
@@ -570,7 +574,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the r
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. The two relative accelerations are not in general exactly opposite: their sum is the Coriolis terms, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, zero here, since { $vel } = 0 (rolling contact).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. In general the two relative accelerations are not opposite: their sum is the opposite of the sum of the two Coriolis terms, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, zero here, since { $vel } = 0 (rolling contact).
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
@@ -582,13 +586,13 @@ vehicle-pin_shared = { $point } is the pin common to { $a } and { $b }: { $sym }
 vehicle-pin_shared_one = { $point } is the pin common to { $a } and { $b }: { $sym } is the velocity of both.
 vehicle-centre = The instant centre of { $body } lies on { $first } and on { $second }; they meet at { $centre } = { $where }, which has no velocity: { $rest } = 0. Every point of { $body } moves perpendicular to the line joining it to { $centre }, at a speed proportional to its distance:
 vehicle-translation = The lines of { $body } are parallel, so { COUNT($body) ->
-        [many] they translate: every point moves as { $point }; their instant centre is at infinity
-       *[one] it translates: every point moves as { $point }; its instant centre is at infinity
-    }, perpendicular to { $v }.
+        [many] they translate: every point moves as { $point }
+       *[one] it translates: every point moves as { $point }
+    }.
 vehicle-translation_equal = { $p } and { $q } have the same velocity, { $vp } = { $vq } = { $value }, so { $body } { COUNT($body) ->
-        [many] translate: every point has the velocity { $value }; their instant centre is at infinity
-       *[one] translates: every point has the velocity { $value }; its instant centre is at infinity
-    }, perpendicular to { $vp }.
+        [many] translate: every point has the velocity { $value }
+       *[one] translates: every point has the velocity { $value }
+    }.
 vehicle-spin = The wheel { $joint } rolls without slipping (radius { $radius }): its centre { $point } moves along the wheel's plane with the speed { $product }, where { $spin } is its spin about its axle, so:
 triad-intro = { $body } { COUNT($body) ->
         [many] are
@@ -738,7 +742,7 @@ higher-straight = The higher pair is written as the motion of { $point } along a
 centre-weld = { $body } { COUNT($body) ->
         [many] are
        *[one] is
-    } fixed to { $other }: they are one rigid body, so the centre is that of { $other }, { $same },
+    } fixed to { $other }: they are one rigid body, so the instant centre is that of { $other }, { $same },
 centre-line-kennedy = the line through { $l } (Aronhold–Kennedy, third body { $k })
 centre-line-moves = the perpendicular to { $v } through { $point } ({ $point } moves with { $body }, which turns about { $pivot })
 centre-line-rolls = the perpendicular to { $v } through { $point } ({ $roller } { COUNT($roller) ->
@@ -761,16 +765,16 @@ centre-carried-slip = {" "}({ $b } { COUNT($b) ->
         [many] do
        *[one] does
     } not slip on { $body }, so its point { $point } has the velocity of { $body } there)
-centre-carried-between = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero:
-centre-carried-between_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $near }:
-centre-carried-outside = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero:
-centre-carried-outside_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the centre lies on that line; on it the velocities are proportional to the distance from the centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $near }:
+centre-carried-between = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero:
+centre-carried-between_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero, at { $dist } from { $near }:
+centre-carried-outside = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero:
+centre-carried-outside_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $near }:
 centre-line-slot = the normal at { $point } to the slot (relative to the slotted body, { $point } can only move along the slot)
 centre-line-slot_fixed = the normal at { $point } to the line of { $a } along which it slides
 centre-line-wheel = the axle of wheel { $joint }, the normal at { $point } to its plane (it does not slip sideways)
-centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
-centre-rate = from { $w } (found in “{ sec-velocities }” through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
-centre-rate_step = from { $w } (found in Step { $step } through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the centre is
+centre-field = it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the instant centre is
+centre-rate = from { $w } (found in “{ sec-velocities }” through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the instant centre is
+centre-rate_step = from { $w } (found in Step { $step } through { $line }): it lies on the perpendicular to { $v } through { $q }, at the distance { $arm } = |{ $v }| / |{ $w }| = { $dist } from { $q }, { $side }, so the instant centre is
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = above { $q }
 side-below = below { $q }
@@ -894,7 +898,7 @@ centre-line-normal = the common normal at the contact { $point } (the bodies sli
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = ground
 # a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
-centre-parallel-between = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have opposite senses, so the centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
-centre-parallel-outside = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the centre, and these two have the same sense, so the centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:
+centre-parallel-between = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the instant centre, and these two have opposite senses, so the instant centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
+centre-parallel-outside = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the instant centre, and these two have the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, towards { $point }: { $sym } = { $value }

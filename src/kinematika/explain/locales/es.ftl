@@ -39,6 +39,8 @@ col-question = pregunta
 col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
+# a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
+structure-subscript_noted_rel = { $sym } es la velocidad angular de { $body } respecto de { $other }
 structure-subscript_drag = { $equal } es la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
@@ -392,7 +394,7 @@ rolling-glide = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
         } sin deslizar sobre el borde de { $a }. Visto desde { $a }, su centro { $centre } mantiene la distancia al borde: se mueve según una recta paralela a la tangente en { $point }. Con ejes en { $centre } que giran con { $a }, el movimiento de { $centre } es el de arrastre (el del punto de { $a } que coincide con él) más el relativo, a lo largo de esa recta (y, en aceleraciones, el término de Coriolis).
-rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común.
+rolling-kept = el contacto se mantiene: en { $point } las aceleraciones de los puntos materiales de { $b } y de { $a } solo difieren en un término según la normal común; no hay término de Coriolis, porque en un contacto de rodadura los dos puntos no tienen velocidad relativa: { $vrel } = 0.
 path-circle = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
@@ -455,8 +457,8 @@ centre-lines = está en { $first } y en { $second }; estas rectas { $far ->
     }
 centre-omega = con las velocidades halladas en «{ sec-velocities }», la velocidad angular respecto de { $frame } es nula: el movimiento relativo es una traslación y el CIR está
 centre-at = en { $point }.
-centre-infinity = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
-centre-infinity_one = { $body } se traslada respecto de { $frame }: todos sus puntos tienen la misma velocidad; su CIR está en el infinito, en la dirección perpendicular a esa velocidad, { $direction }.
+centre-infinity = { $body } se traslada respecto de { $frame } ({ $w } = 0): todos sus puntos tienen la velocidad { $v }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
+centre-infinity_one = { $body } se traslada respecto de { $frame } ({ $w } = 0): todos sus puntos tienen la misma velocidad; su CIR está en el infinito, en la dirección perpendicular a esa velocidad, { $direction }.
 centre-rest = no hay movimiento relativo.
 sec-rates = Velocidades y aceleraciones angulares
 rates-intro = Cada sólido gira respecto del sólido que lo lleva: { $w }, y, derivando en los ejes fijos, { $a }.
@@ -495,6 +497,8 @@ ask-decompose = composición del movimiento de { $point }, referencia móvil { $
 ask-curvature = radio de curvatura de la trayectoria de { $point } respecto de { $frame }
 ask-intrinsic = aceleración tangencial y normal de { $point } respecto de { $frame }
 ans-rest = sin movimiento relativo
+# an asked planar rate with its sense, as the notes ask it (“valor i sentit”: twenty-eighth round d)
+ans-sensed = { $value } ({ $sense })
 ans-point = posición
 ans-from = distancia a { $point }
 ans-direction = dirección
@@ -533,7 +537,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { W
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. Las dos aceleraciones relativas no son en general exactamente opuestas: su suma es igual a los términos de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nula aquí, ya que { $vel } = 0 (contacto de rodadura).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. En general las dos aceleraciones relativas no son opuestas: su suma es la opuesta de la suma de los dos términos de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nula aquí, ya que { $vel } = 0 (contacto de rodadura).
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
@@ -544,8 +548,8 @@ vehicle-line-wheel_own = la perpendicular al plano de la rueda { $joint } por el
 vehicle-pin_shared = { $point } es el pasador común a { $a } y { $b }: { $sym } = { $other }.
 vehicle-pin_shared_one = { $point } es el pasador común a { $a } y { $b }: { $sym } es la velocidad de ambos.
 vehicle-centre = El CIR de { $body } está en { $first } y en { $second }; se cortan en { $centre } = { $where }, que no tiene velocidad: { $rest } = 0. Cada punto de { $body } se mueve perpendicularmente a la recta que lo une con { $centre }, con celeridad proporcional a su distancia:
-vehicle-translation = Las rectas de { $body } son paralelas, así que se traslada: todos sus puntos se mueven como { $point }; su CIR está en el infinito, en la dirección perpendicular a { $v }.
-vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }, así que { $body } se traslada: todos sus puntos tienen la velocidad { $value }; su CIR está en el infinito, en la dirección perpendicular a { $vp }.
+vehicle-translation = Las rectas de { $body } son paralelas, así que se traslada: todos sus puntos se mueven como { $point }.
+vehicle-translation_equal = { $p } y { $q } tienen la misma velocidad, { $vp } = { $vq } = { $value }, así que { $body } se traslada: todos sus puntos tienen la velocidad { $value }.
 vehicle-spin = La rueda { $joint } rueda sin deslizar (radio { $radius }): su centro { $point } se mueve en el plano de la rueda con celeridad { $product }, donde { $spin } es su rotación propia alrededor de su eje, de modo que:
 triad-intro = { $body } está sujeto por tres barras binarias, { $links }: ninguna ecuación vectorial de un solo punto tiene solo dos incógnitas. Como hacen los textos para una tríada, se toma el punto de Assur { $point }, donde se cortan las rectas { $l1 } y { $l3 }, como punto de { $body }:
 triad-collinear = En cada miembro los dos términos desconocidos son perpendiculares a una misma recta ({ $point } está en { $l1 } y en { $l3 }), así que cada miembro tiene un solo módulo desconocido: dos incógnitas, y el polígono se cierra.

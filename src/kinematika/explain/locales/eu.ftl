@@ -39,6 +39,8 @@ col-question = galdera
 col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
+# a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
+structure-subscript_noted_rel = { $sym } { $body } solidoaren abiadura angeluarra da { $other } solidoarekiko
 structure-subscript_drag = { $equal } { $point } puntuaren arrastre-{ WORD($kind) ->
         [accel] azelerazioa
        *[speed] abiadura
@@ -366,7 +368,7 @@ rolling-noslip = { $gear ->
 rolling-noslip_edge = { $b } solidoa ez da irristatzen { $a } solidoaren gainean: { $point } kontaktuan bi puntu materialek abiadura bera dute.
 rolling-same_edge = { $b } solidoa ez da irristatzen { $a } solidoaren gainean: { $point } kontaktuan bi puntu materialek abiadura bera dute, { $sym } = { $other }.
 rolling-glide = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren ertzaren gainean. { $a } solidotik ikusita, haren { $centre } zentroak ertzarekiko distantzia mantentzen du: { $point } puntuko ukitzailearen zuzen paralelo batean zehar mugitzen da. { $a } solidoarekin batera biratzen duten ardatzak { $b } solidoaren { $centre } zentroan definituz, { $centre } puntuaren mugimendua arrastre-mugimendua ({ $a } solidoaren bertako puntuarena) gehi zuzen horretako mugimendu erlatiboa da (eta, azelerazioetan, Coriolisen terminoa).
-rolling-kept = kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak.
+rolling-kept = kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak; ez dago Coriolisen terminorik, errodadura-kontaktu batean bi puntuek ez baitute abiadura erlatiborik: { $vrel } = 0.
 path-circle = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: { $o } zentroko eta { $radius } erradioko zirkunferentzia deskribatzen du; beraz, { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren osagai tangentziala { $al } × { $arm } da.
 path-found = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. { $step }. urratsean aurkitutako { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera, eta osagai tangentziala { $al } × { $arm } da, une oro { $vc } = { $w } × { $arm } baita ({ $point } kontaktua biraketa-zentro instantaneoa da).
 path-line = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), { $ac } = { $al } × { $arm }.
@@ -395,21 +397,21 @@ centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
 centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
 centre-joint-gear = zirkunferentzia primitiboen { $joint } kontaktua,
-centre-joint-prismatic = lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta zentroa gidaren perpendikularrean dago,
+centre-joint-prismatic = lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta BZIa gidaren perpendikularrean dago,
 centre-joint-weld = bi solidoak zurrunki lotuta daude:
 centre-kennedy = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean dago ({ $k1 } hirugarren solidoa) eta { $l2 } zentroetatik pasatzen denean ({ $k2 } hirugarren solidoa); zuzen horiek { $far ->
         [1] paraleloak dira; beraz,
        *[other] ebakitzen dira
     }
-centre-velocities = { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, zentroarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
+centre-velocities = { $frame } solidoarekiko { $p } puntuaren abiadura, { $vp }, eta { $q } puntuarena, { $vq }, BZIarekin lotzen dituzten zuzenekiko perpendikularrak dira; perpendikularrak ebakitzen dira
 centre-lines = bi zuzen hauetan dago: { $first }, eta { $second }; zuzen horiek { $far ->
         [1] paraleloak dira; beraz,
        *[other] ebakitzen dira
     }
-centre-omega = «{ sec-velocities }» atalean aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta zentroa
+centre-omega = «{ sec-velocities }» atalean aurkitutako abiadurekin, { $frame } solidoarekiko abiadura angeluarra nulua da: mugimendu erlatiboa translazio bat da eta BZIa
 centre-at = { $point } puntuan.
-centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
-centre-infinity_one = { $body } solidoa traslatzen da { $frame } solidoarekiko: puntu guztiek abiadura bera dute; biraketa-zentro instantaneoa infinituan dago, abiadura horrekiko norabide perpendikularrean, { $direction }.
+centre-infinity = { $body } solidoa traslatzen da { $frame } solidoarekiko ({ $w } = 0): puntu guztiek { $v } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
+centre-infinity_one = { $body } solidoa traslatzen da { $frame } solidoarekiko ({ $w } = 0): puntu guztiek abiadura bera dute; biraketa-zentro instantaneoa infinituan dago, abiadura horrekiko norabide perpendikularrean, { $direction }.
 centre-rest = ez dago mugimendu erlatiborik.
 sec-rates = Abiadura eta azelerazio angeluarrak
 rates-intro = Solido bakoitza daraman solidoarekiko biratzen da: { $w }, eta, ardatz finkoetan deribatuz, { $a }.
@@ -445,6 +447,8 @@ ask-decompose = { $point } puntuaren mugimenduaren konposizioa, { $frame } erref
 ask-curvature = { $point } puntuaren ibilbidearen kurbadura-erradioa { $frame } solidoarekiko
 ask-intrinsic = { $point } puntuaren azelerazio tangentziala eta normala { $frame } solidoarekiko
 ans-rest = ez dago mugimendu erlatiborik
+# an asked planar rate with its sense, as the notes ask it (“valor i sentit”: twenty-eighth round d)
+ans-sensed = { $value } ({ $sense })
 ans-point = posizioa
 ans-from = { $point } puntura dagoen distantzia
 ans-direction = norabidea
@@ -459,8 +463,8 @@ ans-inflection_point = inflexio-poloa (zirkunferentzian I-ren aurkakoa)
 ans-pole_tangent = polo-tangentea (unitarioa, I mugitzen den noranzkoan)
 ans-pole_normal = polo-normala (unitarioa, I-tik inflexio-polora)
 ans-pole_velocity = I zentroaren abiadura polodietan zehar
-centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
-centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
+centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian:
+centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
 composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek «{ sec-velocities }» atalean aurkitutako { WORD($kind) ->
         [accel] azelerazio
@@ -480,7 +484,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa. Bi azelerazio erlatiboak ez dira, oro har, guztiz aurkakoak: haien batura Coriolisen terminoen batura da, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, eta hemen nulua da, { $vel } = 0 baita (errodadura-kontaktua).
+composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa. Oro har, bi azelerazio erlatiboak ez dira aurkakoak: haien batura bi Coriolisen terminoen baturaren aurkakoa da, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, hemen nulua, { $vel } = 0 baita (errodadura-kontaktua).
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
@@ -491,8 +495,8 @@ vehicle-line-wheel_own = { $joint } gurpilaren planoarekiko perpendikularra { $p
 vehicle-pin_shared = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } = { $other }.
 vehicle-pin_shared_one = { $point } { $a } eta { $b } solidoen giltzadura komuna da: { $sym } bien abiadura da.
 vehicle-centre = { $body } solidoaren biraketa-zentro instantaneoa bi zuzen hauetan dago: { $first }, eta { $second }; { $centre } = { $where } puntuan ebakitzen dira, eta zentro horrek ez du abiadurarik: { $rest } = 0; solidoaren puntu bakoitza { $centre } zentrorainoko zuzenarekiko perpendikularki mugitzen da, distantziarekiko proportzionala den abiadurarekin:
-vehicle-translation = { $body } solidoaren zuzenak paraleloak dira; beraz, solidoa traslatzen da: puntu guztiak { $point } bezala mugitzen dira; biraketa-zentro instantaneoa infinituan dago, { $v } abiadurarekiko norabide perpendikularrean.
-vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }; beraz, { $body } solidoa traslatzen da: puntu guztiek { $value } abiadura dute; biraketa-zentro instantaneoa infinituan dago, { $vp } abiadurarekiko norabide perpendikularrean.
+vehicle-translation = { $body } solidoaren zuzenak paraleloak dira; beraz, solidoa traslatzen da: puntu guztiak { $point } bezala mugitzen dira.
+vehicle-translation_equal = { $p } eta { $q } puntuek abiadura bera dute, { $vp } = { $vq } = { $value }; beraz, { $body } solidoa traslatzen da: puntu guztiek { $value } abiadura dute.
 vehicle-spin = { $joint } gurpila irristatu gabe errodatzen da ({ $radius } erradioa): haren { $point } zentroa gurpilaren planoan mugitzen da { $product } abiaduraz, { $spin } gurpilak bere ardatzaren inguruan duen biraketa propioa izanik; beraz:
 triad-intro = { $body } hiru barra bitarrek eusten dute, { $links }: puntu bakar baten ekuazio bektorialek ez dute bi ezezagun soilik. Triadetarako testuek egiten duten bezala, { $point } Assur puntua hartzen da, { $l1 } eta { $l3 } zuzenak ebakitzen diren tokia, { $body } solidoaren puntu gisa:
 triad-collinear = Alde bakoitzean bi termino ezezagunak zuzen berarekiko perpendikularrak dira ({ $point } { $l1 } zuzenean eta { $l3 } zuzenean dago); beraz, alde bakoitzak modulu ezezagun bakarra du: bi ezezagun, eta poligonoa ixten da.
@@ -627,7 +631,7 @@ dir-tangent = ukitzailea { $point } puntuan
 dir-centre = { $point } kurbadura-zentrorantz
 higher-intro = Goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko bere ibilbidean ({ $radius } erradioko arteka kurbatua, ukitzailearen norabidean): azelerazio erlatiboak v²/ρ osagai normala du ibilbidearen kurbadura-zentrorantz.
 higher-straight = Goi-mailako bikotea { $point } puntuaren mugimendu gisa idazten da, { $holder } solidoarekiko ibilbide zuzen batean (arteka bat ukitzailearen norabidean).
-centre-weld = { $body } eta { $other } zurrunki lotuta daude: solido bakarra dira; beraz, zentroa { $other } solidoarena da, { $same },
+centre-weld = { $body } eta { $other } zurrunki lotuta daude: solido bakarra dira; beraz, BZIa { $other } solidoarena da, { $same },
 centre-line-kennedy = { $l } zentroetatik pasatzen den zuzena (Aronhold–Kennedy, { $k } hirugarren solidoa)
 centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua { $pivot } puntuaren inguruan biratzen den { $body } solidoarekin mugitzen da)
 centre-line-rolls = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $roller } solidoa ez da irristatzen { $on } solidoaren gainean: { $b } solidoaren { $point } puntuak { $body } solidoaren abiadura du, eta { $body } solidoa { $pivot } puntuaren inguruan biratzen da)
@@ -635,16 +639,16 @@ centre-line-rolls_still = { $point } puntuan { $v } abiadurarekiko perpendikular
 centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua traslatzen den { $body } solidoarekin mugitzen da)
 centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra ({ $pivot }′ puntuan, { $pivot } puntutik gidara doan perpendikularraren oinean, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa: { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
 centre-carried-slip = {" "}({ $b } solidoa ez da irristatzen { $body } solidoaren gainean: bere { $point } puntuak { $body } solidoaren abiadura du bertan)
-centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian:
-centre-carried-between_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
-centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian:
-centre-carried-outside_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, zentroa zuzen horretan dago, eta bertan abiadurak zentrorainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
+centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian:
+centre-carried-between_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
+centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian:
+centre-carried-outside_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
 centre-line-slot = artekarekiko normala { $point } puntuan (artekadun solidoarekiko, { $point } artekaren luzeran baino ezin da mugitu)
 centre-line-slot_fixed = { $point } puntuan, { $a } solidoaren zuzenarekiko normala ({ $point } puntua zuzen horretan zehar irristatzen da)
 centre-line-wheel = { $joint } gurpilaren ardatza, haren planoarekiko normala { $point } puntuan (ez da alboetara irristatzen)
-centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
-centre-rate = { $w } abiadura angeluarretik («{ sec-velocities }» atalean { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
-centre-rate_step = { $w } abiadura angeluarretik ({ $step }. urratsean { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, zentroa
+centre-field = { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, BZIa
+centre-rate = { $w } abiadura angeluarretik («{ sec-velocities }» atalean { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, BZIa
+centre-rate_step = { $w } abiadura angeluarretik ({ $step }. urratsean { $line } solidoaren bidez aurkitua): { $q } puntutik { $v } abiadurari marraztutako perpendikularrean dago, { $q } puntutik { $arm } = |{ $v }| / |{ $w }| = { $dist } distantziara, { $side }; beraz, BZIa
 # the side of a point a centre lies on, named (centre-field: below A, to the left of A)
 side-above = { $q } puntuaren gainean
 side-below = { $q } puntuaren azpian
@@ -756,7 +760,7 @@ centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gain
 # the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
 ground-word = lurra
 # zentro bat, bi puntuen zuzenarekiko perpendikularrak diren bi abiadura paralelotatik (apunteen eraikuntza proportzionala)
-centre-parallel-between = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, zentroa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
-centre-parallel-outside = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, zentrorainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, zentroa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
+centre-parallel-between = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, BZIrainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, BZIa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
+centre-parallel-outside = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, BZIrainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
 # a normal acceleration: its magnitude, then the vector with its direction (never a magnitude = a vector)
 term-magnitude = { $mag } = { $how }, { $point } punturantz: { $sym } = { $value }

@@ -149,12 +149,14 @@ class Renderer(ABC):
         self._written: set[str] = set()
         self._rated: set[str] = set()        # bodies whose own symbol (ω_X, α_X, I_X) is written
         self._noted: dict[str, None] = {}     # bodies whose ω the model's notation writes otherwise (ψ̇), as written
+        self._noted_rel: dict[tuple[str, str], None] = {}   # (body, other) whose relative ω it writes otherwise (δ̇)
         self._rating = False
         self._member: Optional[tuple[str, str]] = None   # the first v_{J∈b} written (`subscripts`)
         self._members: dict[str, str] = {}   # each body written after ∈, at its first point (`subscripts`)
         self._legend: Optional[Msg] = None
         self._rel: Optional[tuple[str, str, str, str]] = None   # the first symbol written with "rel" (`subscripts`)
         self._rel_told = False               # the data's sentence on relative quantities said "rel"
+        self._rates_told: set[str] = set()   # relative rates (b/a) that sentence defined (the fan's ω₂)
         self._rel_centres: list[Sym] = []    # instant centres written with "rel", I_{a rel b}
         self._centres_intro: Optional[tuple[str, str]] = None
         self._early = False                  # the legend stands before the first block that needs it
@@ -227,6 +229,8 @@ class Renderer(ABC):
             return CENTRES_INTRO
         if isinstance(b, Msg) and b.key == "data.relative":
             self._rel_told = True            # "rel" said before its first use: no legend for it
+            if b.args.get("rate") == "yes" and isinstance(b.args.get("w"), Sym):
+                self._rates_told.add(b.args["w"].sub)     # ω_{b rel a} defined there: not again
         if isinstance(b, Msg):
             return self.para(self.sentence(self.message(b, lead=True)))
         if isinstance(b, Equation) and b.equality:
@@ -657,6 +661,8 @@ class Renderer(ABC):
             return s
         if s.base == "ω" and len(parts) == 1 and hasattr(self, "_noted"):
             self._noted.setdefault(parts[0], None)      # the notation line defines it (`subscripts`)
+        if s.base == "ω" and len(parts) == 2 and hasattr(self, "_noted_rel"):
+            self._noted_rel.setdefault((parts[0], parts[1]), None)    # δ̇: defined there too
         w = written_name(spelt)
         return Sym(w.base, w.sub, w.sup or s.sup, s.vector, fixed=True)
 
@@ -702,6 +708,13 @@ class Renderer(ABC):
             said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
             items += (["; "] if items else []) + [said]
             defined.add(b)
+        for b, other in [k for k in getattr(self, "_noted_rel", {}) if f"{k[0]}/{k[1]}" not in self._rates_told]:
+            # a relative rate the model's notation writes by a letter of its own (C5-2.1's δ̇,
+            # the notes' steering rate): said as what it is, with the page's other symbols,
+            # before a step writes "δ̇ = 0" (twenty-eighth round (d): δ was defined nowhere)
+            said = Msg("structure.subscript_noted_rel", {"sym": Sym("ω", f"{b}/{other}", vector=False),
+                                                         "body": Name(b, "body"), "other": Name(other, "body")})
+            items += (["; "] if items else []) + [said]
         member = getattr(self, "_member", None)
         members = [member] if member is not None else []     # v_{J∈cylinder}: the point of the cylinder at J, once a page
         members += [(point_, of) for of, point_ in getattr(self, "_members", {}).items()
@@ -1126,11 +1139,13 @@ class Renderer(ABC):
         if c.value.get("point") is None and not c.value.get("rest"):
             # nineteenth round (b): a centre at infinity is said as the translation it is, the
             # translation first (the notes: a body whose points all have one velocity translates;
-            # its centre is at infinity, perpendicular to that velocity)
+            # its centre is at infinity, perpendicular to that velocity); twenty-eighth round (d):
+            # with ω = 0 said with the translation, as the notes do ("es trasllada")
             why = Msg(why.key, {**why.args, "far": 1})
             v = next((m.args["v"] for m in (*c.perps, *c.via) if isinstance(m, Msg) and "v" in m.args), None)
             where = Msg("centre.infinity" if v is not None else "centre.infinity_one",
                         {"body": Name(b, "body"), "frame": self.frame_name(a), "direction": Value(c.value["direction"], ""),
+                         "w": Sym("ω", b if a == self.doc_frame() else f"{b}/{a}", vector=False),
                          **({"v": v} if v is not None else {})})
         return self.message(Msg("centre.line", {"centre": name, "a": Name(a, "body"), "b": Name(b, "body"), "why": why,
                                                 "where": where}))
