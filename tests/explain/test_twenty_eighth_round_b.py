@@ -76,7 +76,7 @@ def test_the_centre_of_wheel_1_is_the_notes_c():
     assert "C" in sol.model.points and "wheel1" in sol.model.carriers("C")
     md = rendered("seed_c5_e5_unequal_wheels", "en", drawings=False)
     assert "| C | centre of *wheel 1* | (0, 2·R + r₁) |" in md
-    assert "= r₁ from C, above C, so the centre is at (0, 2·(R + r₁))" in md
+    assert "= r₁ from C, above C, so the instant centre is at (0, 2·(R + r₁))" in md
 
 
 def _renamed(tree, old: str, new: str):

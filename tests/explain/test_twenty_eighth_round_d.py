@@ -204,7 +204,7 @@ def test_d5_a_rate_of_unknown_sign_says_none(name: str, lang: str) -> None:
 WHOSE = {"en": "the wheel C4 of S2", "es": "la rueda C4 de S2", "ca": "la roda C4 de S2", "eu": "S2-ren C4 gurpila"}
 HINGED = {"en": "its two chassis, S1 and S2, hinged at O, are identical, and so are its four wheels.",
           "es": "sus dos chasis, S1 y S2, articulados en O, son idénticos, y sus cuatro ruedas también son iguales.",
-          "ca": "els dos xassissos, S1 i S2, articulats a O, són idèntics, i les quatre rodes també.",
+          "ca": "els dos xassissos, S1 i S2, són idèntics i estan articulats a O, i les quatre rodes són iguals.",
           "eu": "bi txasisak, S1 eta S2, berdinak dira eta O puntuan giltzatuta daude"}
 
 
