@@ -54,7 +54,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
     fig.bar = bar_unit(ctx, poly.values, poly.syms)
-    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
+    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig)
     return fig
 
 
@@ -149,9 +149,18 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                  values=ctx.drawn_values())
     fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
-    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
+    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig)
     fig.bar = bar_unit(ctx, poly.values, poly.syms)
     return fig
+
+
+def drawing_notes(fig: Figure) -> list:
+    """The caption's word on how the polygon departs from a plain chain of arrows: a term
+    drawn beside its place (`_separated`: it would lie on another arrow) and joined back to
+    its ends by grey dashes. Captions said "head to tail" over terms set aside and tied by
+    dashes no sentence explained (001's a_EO2^n beside the blue o→e, C5-E.1's vertical
+    terms side by side; issue 30, twenty-eighth round (f))."""
+    return [msg("fig.moved_aside")] if fig.lines else []
 
 
 def at_pole_notes(poly: "_Builder") -> list:

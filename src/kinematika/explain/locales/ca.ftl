@@ -227,6 +227,7 @@ fig-at_pole = { $count ->
     [one] { $images } és al pol o, ja que { $zero }.
    *[other] { $images } són al pol o, ja que { $zero }.
 }
+fig-moved_aside = Un terme que quedaria sobre una altra fletxa es dibuixa al seu costat, paral·lel i a escala; uns traços grisos uneixen els seus extrems amb els punts entre els quals va.
 fig-o_prime = La imatge d’O es designa o′, perquè la lletra o designa el pol.
 fig-o_prime_named = o′, la imatge d’O,
 fig-o_prime_fixed = o′, la imatge del punt fix O de { $body },

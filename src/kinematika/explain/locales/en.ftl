@@ -179,6 +179,7 @@ fig-at_pole = { $count ->
     [one] { $images } is at the pole o, since { $zero }.
    *[other] { $images } are at the pole o, since { $zero }.
 }
+fig-moved_aside = A term that would lie on another arrow is drawn beside it, parallel and to scale; grey dashes join its ends to the points it runs between.
 fig-o_prime = The image of O is lettered o′, because the letter o names the pole.
 fig-o_prime_named = o′, the image of O,
 fig-o_prime_fixed = o′, the image of the fixed point O of { $body },

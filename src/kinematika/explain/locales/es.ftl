@@ -185,6 +185,7 @@ fig-at_pole = { $count ->
     [one] { $images } está en el polo o, ya que { $zero }.
    *[other] { $images } están en el polo o, ya que { $zero }.
 }
+fig-moved_aside = Un término que quedaría sobre otra flecha se dibuja a su lado, paralelo y a escala; unos trazos grises unen sus extremos con los puntos entre los que va.
 fig-o_prime = La imagen de O se designa o′, porque la letra o designa el polo.
 fig-o_prime_named = o′, la imagen de O,
 fig-o_prime_fixed = o′, la imagen del punto fijo O de { $body },

@@ -179,6 +179,7 @@ fig-at_pole = { $count ->
     [one] { $images } o poloan dago, { $zero } baita.
    *[other] { $images } o poloan daude, { $zero } baita.
 }
+fig-moved_aside = Beste gezi baten gainean legokeen terminoa haren alboan marrazten da, paraleloan eta eskalan; marra eten grisek haren muturrak lotzen dituzte bere bi puntuekin.
 fig-o_prime = O puntuaren irudia o′ izendatzen da, o letrak poloa izendatzen baitu.
 fig-o_prime_named = o′, O-ren irudia,
 fig-o_prime_fixed = o′, { $body } solidoaren O puntu finkoaren irudia,
