@@ -71,3 +71,57 @@ def test_a_polygon_with_dashes_says_what_they_are(name, lang):
         moved = _moved_terms(fig)
         assert bool(moved) == bool(fig.lines), (fig.caption.key, len(moved), len(fig.lines))
         assert (MOVED[lang] in caption) == bool(fig.lines), (fig.caption.key, caption[-200:])
+
+
+def _level_a(name: str) -> Figure:
+    """The page's acceleration polygon (of the level)."""
+    _, doc = explained(name)
+    return next(f for f in _polygons(doc) if f.caption.key.startswith("fig.level_a"))
+
+
+def test_the_cavity_draws_a_c_once():
+    """C5-E.1: a_C is split twice, a_O + a_CO^n + a_CO^t in Step 1 (the arm OC about the
+    fixed O) and a_C^t + a_C^n in Step 2 (the path's intrinsic components); C moves on a
+    circle about O, so both splits are the same two vectors, and the figure drew the
+    second half of one parallelogram, five labels round c. The polygon draws the terms of
+    the arm (CO), of P (PC) and of the wheels' point at O (OC), and no second split of a_C."""
+    fig = _level_a("seed_c5_e1_cavity")
+    terms = sorted((a.label.sub, a.label.sup) for a in fig.arrows if a.style != "result")
+    assert terms == [("CO", "n"), ("CO", "t"), ("OC", "n"), ("OC", "t"), ("PC", "n"), ("PC", "t")], terms
+
+
+@over(name=SEEDS)
+def test_no_image_is_lettered_with_a_prime_and_a_body(name):
+    """o′ is O's image, primed because o is the pole; a body's point at O keeps its body and
+    needs no prime (o∈wheels): C5-E.1 lettered "o′∈wheels" while its caption called o′ "the
+    image of the fixed point O of the arm OC", at the pole: two points lettered o′."""
+    _, doc = explained(name)
+    for fig in _polygons(doc):
+        for label, _, _ in fig.points:
+            assert not any("′∈" in n for n in label.split(", ")), (fig.caption.key, label)
+
+
+def test_the_cavity_letters_the_wheels_point_at_o_apart_from_o_prime():
+    """C5-E.1: the wheels' point at O has its own image, v_{O∈wheels} = 6Rθ̇ along x (the
+    wheels roll with ω = −2θ̇ about J, 3R below O), lettered o∈wheels; o′ is not lettered
+    apart, being at the pole (v_O = 0)."""
+    _, doc = explained("seed_c5_e1_cavity")
+    fig = next(f for f in _polygons(doc) if f.caption.key.startswith("fig.level_v"))
+    R, thetad = 0.1, 2.0                                    # the page's draw_at
+    images = {n: p for label, p, _ in fig.points for n in label.split(", ")}
+    assert "o∈wheels" in images and "o′" not in images, images
+    x, y = images["o∈wheels"]
+    assert math.isclose(abs(x), 6 * R * thetad, rel_tol=1e-6) and abs(y) < 1e-9, (x, y)
+
+
+def test_the_rolling_pair_letters_f_in_r():
+    """001's rolling pair: a_{F∈N} = a_A + a_FA^n + a_FA^t + a_{F∈N rel R}; the vertex after
+    a_FA^t is a_{F∈R}, an answer, and had no letter. By hand (the fifth reading, en §4):
+    a_{F∈R} = (0.625, −1.804) m/s²; the vertex is lettered f∈R, where a_FA^t ends."""
+    fig = _level_a("seed_001_rolling_pair")
+    images = {n: p for label, p, _ in fig.points for n in label.split(", ")}
+    assert "f∈R" in images, sorted(images)
+    x, y = images["f∈R"]
+    assert math.isclose(x, 0.625, abs_tol=2e-3) and math.isclose(y, -1.804, abs_tol=2e-3), (x, y)
+    ends = [a.end for a in fig.arrows if a.label is not None and (a.label.sub, a.label.sup) == ("FA", "t")]
+    assert ends and all(math.dist(e, (x, y)) < 1e-9 for e in ends), ends
