@@ -125,3 +125,36 @@ def test_the_rolling_pair_letters_f_in_r():
     assert math.isclose(x, 0.625, abs_tol=2e-3) and math.isclose(y, -1.804, abs_tol=2e-3), (x, y)
     ends = [a.end for a in fig.arrows if a.label is not None and (a.label.sub, a.label.sup) == ("FA", "t")]
     assert ends and all(math.dist(e, (x, y)) < 1e-9 for e in ends), ends
+
+
+TOO_SHORT = {"en": "too short to be seen at this scale (shorter than an arrowhead)",
+             "es": "para verse a esta escala (más cort",
+             "ca": "per veure’s a aquesta escala (més curt",
+             "eu": "laburregia"}
+HEAD = 7.0                  # the arrowhead's length in its line's widths (the SVG's marker)
+WIDTH = {"result": 2.2}     # blue arrows' width; the others' 1.8
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_an_arrow_too_short_to_see_is_named_in_the_caption(name, lang):
+    """An arrow shorter than its own arrowhead, as drawn, shows a head and no line (C5-E.4's
+    a_U = −v̇ at the pole, 1/32 of a_P = v²/R at the drawn numbers; a_PU^t a stub at p): its
+    caption says which arrows are too short to be seen, and no label is set beside such a
+    term, where the labels of the short terms piled up (001's a_BA^t at the pole, C5-1.3's
+    a_QS^n, a_EQ^n round q). An arrow that can be seen carries no such sentence."""
+    rendered(name, lang, "html")                        # lays the figures out
+    for fig, caption in _figure_captions(name, lang):
+        ks = {round(lay.k, 9) for lay in fig.layouts.values()}
+        assert len(ks) == 1, ks
+        k = ks.pop()
+        short = [a for a in fig.arrows if math.dist(a.start, a.end) * k < HEAD * WIDTH.get(a.style, 1.8)]
+        assert (TOO_SHORT[lang] in caption) == bool(short), (fig.caption.key, len(short), caption[-250:])
+        assert all(a.label is None for a in short), (fig.caption.key, [a.label for a in short])
+
+
+def test_the_upper_wheel_names_a_u_and_a_pu_t():
+    """C5-E.4, drawn at R = 0.25, v = 2, v̇ = 0.5: a_U = (−v̇, 0) is 0.5 long and
+    a_PU^t = α × UP is v̇ = 0.5 too (α = −v̇/R, UP = R), beside a_P = v²/R = 16; the caption
+    names both."""
+    caption = next(c for f, c in _figure_captions("seed_c5_e4_upper_wheel", "en") if f.caption.key.startswith("fig.level_a"))
+    assert "a_U and a_PU^t are too short to be seen at this scale" in caption, caption

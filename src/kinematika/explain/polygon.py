@@ -54,7 +54,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
     fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
     fig.bar = bar_unit(ctx, poly.values, poly.syms)
-    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig)
+    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig, poly.symbols)
     return fig
 
 
@@ -149,18 +149,50 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                  values=ctx.drawn_values())
     fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
-    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig)
+    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig, poly.symbols)
     fig.bar = bar_unit(ctx, poly.values, poly.syms)
     return fig
 
 
-def drawing_notes(fig: Figure) -> list:
+HEAD = 7.0              # an arrowhead's length, in its line's widths (`render.svg`'s marker)
+WIDTHS = {"result": 2.2}   # an arrow's line width (points) by style; 1.8 else (`render.svg.svg`)
+UNSEEN = 1.0            # an arrow shorter than its head (times this) shows the head alone
+
+
+def short_arrows(fig: Figure, symbols: dict) -> list:
+    """The symbols of the arrows too short to be seen as arrows at the scale the figure is
+    drawn at: shorter than their arrowhead (`UNSEEN`), they show the head and no line (C5-E.4's a_U,
+    1/32 of a_P, an arrowhead hidden at the pole; a_PU^t a stub at p). `symbols` names the
+    arrows drawn without a label (the blue ones, lettered by their images) by their ends."""
+    from .render.svg import bounds, points_per_unit
+
+    k = points_per_unit(*bounds(fig))
+    out: list = []
+    for a in fig.arrows:
+        head = HEAD * WIDTHS.get(a.style, 1.8)
+        sym = a.label if a.label is not None else symbols.get((a.start, a.end))
+        if sym is not None and sym not in out and math.dist(a.start, a.end) * k < UNSEEN * head:
+            out.append(sym)
+    return out
+
+
+def drawing_notes(fig: Figure, symbols: dict | None = None) -> list:
     """The caption's word on how the polygon departs from a plain chain of arrows: a term
     drawn beside its place (`_separated`: it would lie on another arrow) and joined back to
     its ends by grey dashes. Captions said "head to tail" over terms set aside and tied by
     dashes no sentence explained (001's a_EO2^n beside the blue o→e, C5-E.1's vertical
-    terms side by side; issue 30, twenty-eighth round (f))."""
-    return [msg("fig.moved_aside")] if fig.lines else []
+    terms side by side); and the arrows too short to be seen at its scale (`short_arrows`),
+    named, since a term drawn longer than it is would be a lie and one unseen is lost: the
+    reader finds its value in the text (C5-E.4's a_U at the pole; issue 30, twenty-eighth
+    round (f))."""
+    out = [msg("fig.moved_aside")] if fig.lines else []
+    short = short_arrows(fig, symbols or {})
+    if short:
+        out.append(msg("fig.too_short", terms=Names(short), count=len(short)))
+        # the caption names them: no label beside an arrow no one sees, piled with the
+        # labels where the short terms meet (001's a_BA^t at the pole, C5-1.3's a_QS^n, a_EQ^n)
+        fig.arrows = [Arrow(a.start, a.end, None, a.style) if a.label in short else a for a in fig.arrows]
+    return out
 
 
 def at_pole_notes(poly: "_Builder") -> list:
@@ -297,6 +329,7 @@ class _Builder:
         self.syms: list = []                # the symbol of each of `values` (a_P)
         self.named: dict[str, tuple] = {}   # image -> (its place, the symbol of the motion ending there)
         self.centres: dict[str, Any] = {}   # an instant centre's point at rest (v_{I_rod}) -> its symbol
+        self.symbols: dict[tuple, Any] = {}  # an arrow's ends -> its symbol (a blue arrow is drawn without it)
         self.sides: list[list[tuple]] = []  # each side drawn, as its terms' drawn vectors (`_repeated`)
 
     def at_pole(self, xy: tuple) -> bool:
@@ -434,6 +467,8 @@ class _Builder:
     def _arrow(self, a: Arrow, label: bool = True) -> None:
         """Add an arrow once; a point's absolute motion wins over a term that is the same
         arrow from the pole (v_AO2 when O2 is fixed): blue, named by its image."""
+        if a.label is not None:
+            self.symbols.setdefault((a.start, a.end), a.label)
         a = a if label else Arrow(a.start, a.end, None, a.style)
         for i, b in enumerate(self.arrows):
             if _close(a.start, b.start, self.size) and _close(a.end, b.end, self.size):
