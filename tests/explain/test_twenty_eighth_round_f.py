@@ -16,13 +16,13 @@ from .helpers import LANGS, SEEDS, explained, over, rendered
 POLYGONS = ("fig.level", "fig.step", "fig.polygon")
 
 MOVED = {"en": "A term that would lie on another arrow is drawn beside it, parallel and to scale; "
-               "grey dashes join its ends to the points it runs between.",
+               "dashed lines join its ends to the points it runs between.",
          "es": "Un término que quedaría sobre otra flecha se dibuja a su lado, paralelo y a escala; "
-               "unos trazos grises unen sus extremos con los puntos entre los que va.",
+               "unas líneas discontinuas unen sus extremos con los puntos entre los que va.",
          "ca": "Un terme que quedaria sobre una altra fletxa es dibuixa al seu costat, paral·lel i a "
-               "escala; uns traços grisos uneixen els seus extrems amb els punts entre els quals va.",
+               "escala; unes línies discontínues uneixen els seus extrems amb els punts entre els quals va.",
          "eu": "Beste gezi baten gainean legokeen terminoa haren alboan marrazten da, paraleloan eta "
-               "eskalan; marra eten grisek haren muturrak lotzen dituzte bere bi puntuekin."}
+               "eskalan; marra etenek haren muturrak lotzen dituzte bere bi puntuekin."}
 
 
 def _polygons(doc) -> list[Figure]:

@@ -227,7 +227,10 @@ fig-at_pole = { $count ->
     [one] { $images } és al pol o, ja que { $zero }.
    *[other] { $images } són al pol o, ja que { $zero }.
 }
-fig-moved_aside = Un terme que quedaria sobre una altra fletxa es dibuixa al seu costat, paral·lel i a escala; uns traços grisos uneixen els seus extrems amb els punts entre els quals va.
+fig-moved_aside = Un terme que quedaria sobre una altra fletxa es dibuixa al seu costat, paral·lel i a escala; { $format ->
+        [md] unes línies discontínues uneixen
+       *[other] uns traços grisos uneixen
+    } els seus extrems amb els punts entre els quals va.
 fig-too_short = { $count ->
     [one] { $terms } és massa curt per veure’s a aquesta escala (més curt que una punta de fletxa); el seu valor és al text.
    *[other] { $terms } són massa curts per veure’s a aquesta escala (més curts que una punta de fletxa); els seus valors són al text.

@@ -179,7 +179,10 @@ fig-at_pole = { $count ->
     [one] { $images } is at the pole o, since { $zero }.
    *[other] { $images } are at the pole o, since { $zero }.
 }
-fig-moved_aside = A term that would lie on another arrow is drawn beside it, parallel and to scale; grey dashes join its ends to the points it runs between.
+fig-moved_aside = A term that would lie on another arrow is drawn beside it, parallel and to scale; { $format ->
+        [md] dashed lines join
+       *[other] grey dashes join
+    } its ends to the points it runs between.
 fig-too_short = { $count ->
     [one] { $terms } is too short to be seen at this scale (shorter than an arrowhead); its value is in the text.
    *[other] { $terms } are too short to be seen at this scale (shorter than an arrowhead); their values are in the text.

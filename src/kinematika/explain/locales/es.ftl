@@ -185,7 +185,10 @@ fig-at_pole = { $count ->
     [one] { $images } está en el polo o, ya que { $zero }.
    *[other] { $images } están en el polo o, ya que { $zero }.
 }
-fig-moved_aside = Un término que quedaría sobre otra flecha se dibuja a su lado, paralelo y a escala; unos trazos grises unen sus extremos con los puntos entre los que va.
+fig-moved_aside = Un término que quedaría sobre otra flecha se dibuja a su lado, paralelo y a escala; { $format ->
+        [md] unas líneas discontinuas unen
+       *[other] unos trazos grises unen
+    } sus extremos con los puntos entre los que va.
 fig-too_short = { $count ->
     [one] { $terms } es demasiado corto para verse a esta escala (más corto que una punta de flecha); su valor está en el texto.
    *[other] { $terms } son demasiado cortos para verse a esta escala (más cortos que una punta de flecha); sus valores están en el texto.

@@ -179,7 +179,10 @@ fig-at_pole = { $count ->
     [one] { $images } o poloan dago, { $zero } baita.
    *[other] { $images } o poloan daude, { $zero } baita.
 }
-fig-moved_aside = Beste gezi baten gainean legokeen terminoa haren alboan marrazten da, paraleloan eta eskalan; marra eten grisek haren muturrak lotzen dituzte bere bi puntuekin.
+fig-moved_aside = Beste gezi baten gainean legokeen terminoa haren alboan marrazten da, paraleloan eta eskalan; { $format ->
+        [md] marra etenek
+       *[other] marra eten grisek
+    } haren muturrak lotzen dituzte bere bi puntuekin.
 fig-too_short = { $count ->
     [one] { $terms } laburregia da eskala honetan ikusteko (gezi-punta bat baino laburragoa); haren balioa testuan dago.
    *[other] { $terms } laburregiak dira eskala honetan ikusteko (gezi-punta bat baino laburragoak); haien balioak testuan daude.
