@@ -45,7 +45,7 @@ def test_seed_c5_1_1_pulley_on_a_cable():
     assert same(name, answer(name, omega="strand1"), w_strand) and w_strand == v / (6 * r)
     assert same(name, answer(name, omega="strand2"), w_strand)                  # symmetry
     assert same(name, answer(name, icr="strand1")["point"], g1)
-    assert same(name, answer(name, velocity="D"), cross(w_pulley, [0, -r - icr[1]]))
+    assert same(name, answer(name, velocity="P"), cross(w_pulley, [0, -r - icr[1]]))
 
 
 def test_seed_c5_1_5_block_rises_at_6v():

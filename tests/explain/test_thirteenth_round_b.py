@@ -190,8 +190,8 @@ def test_a_centre_placed_from_one_velocity_names_its_side(name, lang):
     # C5-1.6: QI = ω × v_A / ω² with ω = −ω k, v_A = (−rω, 4rω): (4r, r), up and right of A
     ("seed_c5_1_6_belt", "en", "from A, above and to the right of A, so the centre is"),
     ("seed_c5_1_6_belt", "ca", "d’A, per sobre i a la dreta d’A, de manera que el CIR és"),
-    # C5-E.5: ω = v/r₁ k, v_D = (v, 0): QI = (0, r₁), above D
-    ("seed_c5_e5_unequal_wheels", "es", "de D, por encima de D, así que el CIR está"),
+    # C5-E.5: ω = v/r₁ k, v_C = (v, 0): QI = (0, r₁), above C (wheel 1's centre, the notes' C)
+    ("seed_c5_e5_unequal_wheels", "es", "de C, por encima de C, así que el CIR está"),
     # C5-E.6: ω = −rv/(R R_w) k < 0, v_C = (v, 0): QI points down, below C
     ("seed_c5_e6_bicycle", "eu", "distantziara, C puntuaren azpian; beraz, zentroa"),
 ])

@@ -44,7 +44,8 @@ def _clash(name: str, md: str) -> list[str]:
 def test_the_marks_legend_is_plain_and_a_clash_is_its_own_sentence(name, lang):
     """Every page with equations lists the legend plainly; a letter that is also a point is
     said in one sentence of its own right after the legend, naming that letter (C5-1.1 and
-    C5-E.5: D; C5-2.1: M; 001's guide M is a body: nothing)."""
+    C5-E.5: D; C5-2.1: M, until the twenty-eighth round (b) renamed them; 001's guide M is a
+    body: nothing). A user's model keeps the sentence: test_twenty_eighth_round_b.py."""
     md = rendered(name, lang, drawings=False)
     line = next((ln for ln in md.splitlines() if LEGEND[lang] in ln), None)
     if line is None:

@@ -8,6 +8,8 @@ is a double arrow at the edge, along its direction.
 """
 from __future__ import annotations
 
+import re
+
 from typing import Optional, TypedDict
 
 import numpy as np
@@ -87,10 +89,28 @@ def _same_place(a: MarkView, b: MarkView, size: float) -> bool:
     return False
 
 
+LINE_CHARS = 26         # characters a group label's line holds at most, as read (I₁₂ four, I_portador ten)
+
+
 def group_label(group: list[MarkView], per_line: int = 4) -> str:
-    """The names of a group of marks, a few to a line: I₁₂, I₁₃, I₁₄."""
+    """The names of a group of marks, a few to a line: I₁₂, I₁₃, I₁₄ — at most `per_line`
+    names, and no more than a line of `LINE_CHARS` characters as read holds: centres named
+    after their bodies are long, and three on one line ("I_portador, I_central, I_corona",
+    C5-1.4's three centres at the pin O, twenty-eighth round (c)) made a label so wide that
+    its middle lay nearer the next point than its own ring."""
     names = [m.label for m in group]
-    return ",\n".join(", ".join(names[i:i + per_line]) for i in range(0, len(names), per_line))
+    lines: list[list[str]] = [[]]
+    for name in names:
+        line = lines[-1]
+        if line and (len(line) >= per_line or sum(_read(n) + 2 for n in line) + _read(name) > LINE_CHARS):
+            lines.append([])
+        lines[-1].append(name)
+    return ",\n".join(", ".join(line) for line in lines)
+
+
+def _read(label: str) -> int:
+    """How many characters a label reads as: its mathtext's markup left out ($I_{\\mathrm{sun}}$: 4)."""
+    return len(re.sub(r"\\mathrm|[${}_^\\]", "", label))
 
 
 def _key(group: list[MarkView]) -> str:

@@ -235,8 +235,30 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
                          if (note.how == "kennedy" and not note.perps) or ctx.frame in p]
     asked = {frozenset((ctx.rel(q.relative_to) or ctx.frame, q.target)) for q in worked(ctx).centres}
     asked |= kin_centres(ctx, asked)
-    ctx.centre_notes = (made, _chosen(ctx, made, deps, asked), asked)
+    ctx.centre_notes = (made, _chosen(ctx, made, deps, asked | axle_centres(ctx, made, asked)), asked)
     return ctx.centre_notes
+
+
+def axle_centres(ctx: Ctx, made: dict, asked: set[frozenset]) -> set[frozenset]:
+    """On a page that writes centres relative to the frame (some are asked), the centres of
+    the other bodies whose rates the questions ask relative to the frame (ω, α: a question
+    about a body that `needs_rate`) and that turn about a fixed axle, a pin on the frame:
+    the notes name them with the rest ("Els CIRs
+    respecte al terra del portador, de la corona i de la roda central coincideixen amb el
+    punt central", C5-1.4), and a page that listed the carrier's and the ring's centres at O
+    but not the sun wheel's, whose ω it asks, left the student to wonder why (issue 30,
+    twenty-eighth round (c)). One line each; they are not "asked" (the answers list only the
+    questions; the order of the page does not change). A wheel rolling on the frame is not
+    added: its velocity step says already that its contact is its instant centre."""
+    if not any(ctx.frame in key for key in asked):
+        return set()
+    from ..questions import QUESTIONS
+
+    bodies = {q.target for q in ctx.model.questions if QUESTIONS[q.kind].about == "body"
+              and QUESTIONS[q.kind].needs_rate and isinstance(q.target, str)
+              and (ctx.rel(q.relative_to) or ctx.frame) == ctx.frame}
+    keys = {frozenset((ctx.frame, b)) for b in bodies if b != ctx.frame}
+    return {k for k in keys if k in made and made[k].how == "joint" and made[k].joint_type == "revolute"}
 
 
 def kin_centres(ctx: Ctx, asked: set[frozenset]) -> set[frozenset]:

@@ -162,9 +162,10 @@ class Lead:
 class Ann:
     """What is known of a term (seed 001): magnitude M or ?, direction D, ?, ⊥ or ∥ a line.
 
-    `code` is one of "M", "D", "?", "perp", "para", "zero", or "rate": a magnitude that is an
-    unknown rate times its arm (α·JS), the rate shared by several terms of one equation
-    (`shared.share`); `ref` names the line (a segment "AB", or a guide `Msg`) or the formula.
+    `code` is one of "M", "D", "?", "perp", "para" or "zero"; `ref` names the line (a segment
+    "AB", or a guide `Msg`) or a known magnitude's formula (ω²·AB). An unknown magnitude "?"
+    whose rate several terms of one equation share keeps that rate and its arm in `ref`
+    ([α, "·JS"], `shared.share`): the marks row writes "?", the sentence before it the rate.
     """
 
     code: str
@@ -265,7 +266,6 @@ class Figure:
     unit: str = ""                                 # unit of the scale bar (speed, accel, len)
     sample: bool = False                           # drawn at sample values of the symbols
     values: dict = field(default_factory=dict)     # ... namely these (a symbolic model's draw_at)
-    bar: Optional[tuple] = None                    # a symbolic bar's unit: (formula, its drawn number)
     notes: list = field(default_factory=list)      # sentences after the caption (how a label reads)
     layouts: dict = field(default_factory=dict, repr=False, compare=False)   # by the labels' texts
 

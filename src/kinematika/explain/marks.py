@@ -14,6 +14,13 @@ centre placed as a point): "never the point D" on C5-1.1 and C5-E.5, "never the 
 C5-2.1. A body called M (001's guide) is not a point; "never the points M and D" named a
 point the page does not have (issue 30, twenty-first round (a)).
 
+The seeds no longer name a point M or D: the notes name none of those points so (C5-1.1's
+lowest point of the pulley and C5-2.1's middle of the rear axle are P, the notes' letter for
+the point asked about and C5-2.2's for an axle's middle; C5-E.5's centre of wheel 1 is the
+notes' C), and "v_D" under a mark "D" read badly, the sentence as a patch (issue 30,
+twenty-eighth round (b)). The sentence stays for a user's model that names a point so
+(jansen_leg's D, car_wheel_steering's M).
+
 The legend itself is plain on every page ("M: magnitude known; D: direction known; ?:
 unknown"); the clash is one short sentence of its own after it, naming its letter ("Here D
 marks a known direction; it is not the point D."): an aside inside the legend read oddly, and

@@ -15,7 +15,7 @@ from __future__ import annotations
 import re
 
 import math
-from typing import Any, Sequence
+from typing import Any
 
 from .context import Ctx
 from .document import CENTRE_POINT_RE, Arrow, Described, Equation, Figure, Inline, Lead, Name, Names, msg
@@ -31,14 +31,17 @@ CROWDED = 3             # images at one point past which a polygon along one lin
 
 def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = False) -> Figure | None:
     """The polygon of all the planar equations of a level ('v' or 'a'), or of one step's
-    (`step`), or None."""
+    (`step`), or None. None too when it would draw a single arrow: a "polygon" of one vector
+    closes nothing and a teacher does not draw it; the equation alone says it all (C5-1.6's
+    v_A = v_O + v_AO with v_O = 0, whose one arrow was its whole velocity polygon; the notes
+    draw no figure there: issue 30, twenty-eighth round (c))."""
     eqs = [e for e in equations if e.level == level]
     if not ctx.planar or not eqs:
         return None
     poly = _Builder(ctx)
     for eq in eqs:
         poly.equation(eq)
-    if not poly.arrows:
+    if len(poly.arrows) < 2:
         return None
     key = ("fig.step_v" if level == "v" else "fig.step_a") if step else ("fig.level_v" if level == "v" else "fig.level_a")
     if key == "fig.level_a":                # the caption names only the kinds of terms drawn
@@ -53,7 +56,6 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
                  unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
-    fig.bar = bar_unit(ctx, poly.values, poly.syms)
     fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig, poly.symbols)
     return fig
 
@@ -150,7 +152,6 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
     fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
     fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig, poly.symbols)
-    fig.bar = bar_unit(ctx, poly.values, poly.syms)
     return fig
 
 
@@ -246,77 +247,6 @@ def _at_pole(poly: "_Builder") -> set:
     return {name for name, (xy, _) in poly.named.items() if poly.at_pole(xy)}
 
 
-def bar_unit(ctx: Ctx, values: list, syms: Sequence = ()) -> tuple | None:
-    """The unit a symbolic polygon's scale bar is measured in, as (formula, its number at the
-    figure's draw_at values): the product of symbols that the longest absolute motion drawn
-    (blue) is a multiple of, in its largest component (C5-E.4's a_P = v²/R: a bar of
-    "v²/(2·R)"; C5-1.4's r·ω: "2·r·ω"), the next longest when it is no such multiple. Its
-    sample numbers have no unit a reader could name, and a bar of a bare "5" says nothing
-    (issue 30, twentieth round (c)). None on a numeric page (its bar says m/s, m/s²) or
-    when no component is such a product.
-
-    A product of more than `FEW_FACTORS` symbols is no unit a teacher draws a bar in
-    (C5-E.6's "L·r²·v²/(5·R²·R_wheel²)" under its acceleration polygon): the bar is then
-    measured in the magnitude of the longest absolute motion drawn that a point names
-    (`syms`, the symbol of each of `values`), "|a_P|/5", the polygon's own reference
-    vector (`_reference`; issue 30, twenty-fourth round (b))."""
-    if not ctx.symbolic:
-        return None
-    import sympy
-
-    def size(x: Any) -> float:
-        return abs(float(ctx.drawn(x)))
-
-    expanded = [sympy.expand(c) for value in values for c in (value if isinstance(value, tuple) else (value,))
-                if isinstance(c, sympy.Basic) and c.free_symbols]
-    parts = [sympy.factor(c) for c in expanded if _may_be_a_product(c)]
-    for c in sorted(parts, key=size, reverse=True):         # sorted keeps the first of equals first
-        _, rest = c.as_independent(*c.free_symbols, as_Add=False)      # -(2 + √3)/2 · v
-        factors = [f.as_base_exp() for f in sympy.Mul.make_args(rest)]
-        if rest.free_symbols and all(b.is_Symbol and e.is_Rational for b, e in factors) and size(rest) > 0:
-            if len(rest.free_symbols) > FEW_FACTORS:
-                return _reference(ctx, values, syms) or (rest, size(rest))
-            return rest, size(rest)
-    return None
-
-
-FEW_FACTORS = 3     # symbols a scale bar's unit may multiply (2·r·ω, v²/(2·R)); more: the reference vector
-
-
-def _reference(ctx: Ctx, values: list, syms: Sequence) -> tuple | None:
-    """The magnitude of the longest absolute motion drawn whose symbol names a point (a_P,
-    not a_{P∈N}, not a term's a_PC^n), as (|a_P|, its drawn length): the unit of a symbolic
-    polygon's bar whose product of symbols is too long to read (`bar_unit`). None when no
-    drawn motion is such a point's."""
-    import sympy
-
-    named = [(math.hypot(*ctx.drawn(value)), sym) for value, sym in zip(values, syms)
-             if getattr(sym, "sub", "").isalnum() and not sym.sup and not sym.sub_key]
-    named = [(size, sym) for size, sym in named if size > 0]
-    if not named:
-        return None
-    size, sym = max(named, key=lambda n: n[0])            # max keeps the first of equals
-    return sympy.Abs(sympy.Symbol(f"{sym.base}_{sym.sub}")), size
-
-
-def _may_be_a_product(expanded: Any) -> bool:
-    """Whether factoring `expanded` (an expanded sympy expression) could give a number times
-    a product of symbols' powers: not when a function of the symbols (sin θ₂) or a root of
-    a sum of them (√(a² + b²)) is left in it. Factoring writes the same expression as a
-    product of polynomials in those same generators, so a generator the expanded form
-    depends on stays in some factor, whose base is then not a symbol; skipping the factoring
-    there gives `bar_unit` the same answer without its cost (a symbolic four-bar's 44
-    components: most of its explanation's build)."""
-    import sympy
-
-    for atom in sympy.preorder_traversal(expanded):
-        if isinstance(atom, sympy.Function) and atom.free_symbols:
-            return False
-        if isinstance(atom, sympy.Pow) and not atom.exp.is_Integer and not atom.base.is_Symbol and atom.base.free_symbols:
-            return False
-    return True
-
-
 class _Builder:
     """Arrows and images, each drawn once."""
 
@@ -325,8 +255,6 @@ class _Builder:
         self.arrows: list[Arrow] = []
         self.images: dict[str, tuple] = {}
         self.size = max(ctx.scale_of("speed"), 1e-300)
-        self.values: list = []              # the absolute motions drawn (blue), as the solver gives them
-        self.syms: list = []                # the symbol of each of `values` (a_P)
         self.named: dict[str, tuple] = {}   # image -> (its place, the symbol of the motion ending there)
         self.centres: dict[str, Any] = {}   # an instant centre's point at rest (v_{I_rod}) -> its symbol
         self.symbols: dict[tuple, Any] = {}  # an arrow's ends -> its symbol (a blue arrow is drawn without it)
@@ -393,8 +321,6 @@ class _Builder:
                 end = (tip[0] + step[0], tip[1] + step[1])
                 whole = term.kind == "point" and not term.sym.sup
                 if whole and tip == origin:
-                    self.values.append(term.value)
-                    self.syms.append(term.sym)
                     self._image(term.sym.sub, end)
                     self._named(term.sym, end)
                     style = "known" if self.single and not term.unknown else "result"
@@ -407,8 +333,6 @@ class _Builder:
         if eq.target.sym.base in ("v", "a") and not eq.target.sym.sup:
             self._named(eq.target.sym, end)
         if end != origin and eq.target.sym.base in ("v", "a"):
-            self.values.append(eq.target.value)
-            self.syms.append(eq.target.sym)
             if not eq.target.sym.sup:
                 self._image(eq.target.sym.sub, end)
             self._arrow(Arrow(origin, end, eq.target.sym, "result"), label=self.single)

@@ -3,9 +3,16 @@
 A planar vector equation solves two scalar unknowns. When one unknown rate appears in two
 of its terms — C5-1.3's support: a_S = α_euskarria × JS (its centre on its straight path)
 and a_QS^t = α_euskarria × SQ — marking both terms ? shows three unknowns under the
-sentence "a planar equation solves two". The notes count α once: each such term writes its
-magnitude as the rate times its arm (α_euskarria·JS, α_euskarria·SQ), and a sentence before
-the equation says the terms share that one unknown."""
+sentence "a planar equation solves two". The notes count α once, and a sentence before the
+equation says the terms share that one unknown and what their magnitudes are (α_euskarria·JS,
+α_euskarria·SQ).
+
+The marks row itself says only what the notes' marks say, M, D, ?, ⊥ …, ∥ … (or, for a
+known magnitude, the notes' formula ω²·AB): a formula over an unknown term (α_support·SJ over
+a_S) reads as a known magnitude, and the notes mark an unknown magnitude "?" (issue 30,
+twenty-eighth round (c)). Each such term keeps its "?", carrying the rate and its arm in the
+annotation's `ref` (never written in the row) so that the sentence, and a count of the
+equation's unknowns, read the shared rate once."""
 from __future__ import annotations
 
 from .document import Ann, Equation, Inline, Names, Section, Sym, Term, msg
@@ -31,9 +38,9 @@ def _arm(t: Term) -> str:
 
 
 def share(eq: Equation) -> list:
-    """Mark the terms of `eq` that share an unknown rate by that rate (magnitude α·JS, code
-    "rate") and return the sentence that says so, one per shared rate (none if no rate is
-    shared)."""
+    """Tie the terms of `eq` that share an unknown rate to that rate (their magnitude stays
+    "?", its `ref` the rate and its arm, α·JS) and return the sentence that says so and counts
+    their ? once, one per shared rate (none if no rate is shared)."""
     groups: dict[str, list[Term]] = {}
     for side in eq.sides:
         for t in side:
@@ -46,7 +53,7 @@ def share(eq: Equation) -> list:
             continue
         rate = terms[0].how[0]
         for t in terms:
-            t.mag = Ann("rate", [rate, _arm(t)])
+            t.mag = Ann("?", [rate, _arm(t)])
         out.append(msg("eq.shared_rate", rate=rate, terms=Names([t.sym for t in terms]),
                        mags=Names([Inline([rate, _arm(t)]) for t in terms])))
     return out

@@ -12,7 +12,7 @@ from ..algebra.vectors import scale
 from ..model.model import Joint
 from ..point_pair import PointPair
 from .context import Ctx, alpha_sym, omega_sym, segment
-from .document import Ann, Msg, Sym, Term, Value, body, joint, msg
+from .document import Ann, Msg, Name, Sym, Term, Value, body, joint, msg
 
 UNIT = {"v": "speed", "a": "accel"}
 
@@ -135,4 +135,30 @@ def contact_term(ctx: Ctx, name: str, body: str, other: str, unknown: bool = Fal
     how = [] if unknown else [omega_sym(body, other), " × (", Sym("v", f"{name}∈{other}"), " − ",
                               Sym("v", name, "geom"), ")"]
     return Term(Sym("a", relative_name(name, body, other)), ctx.clean(ctx.acc(body, name, other), "accel"),
-                Ann("?") if unknown else Ann("M"), Ann("para", Msg("dir.normal", {})), how, unknown, "contact")
+                Ann("?") if unknown else Ann("M"), Ann("para", contact_normal(ctx, name, body, other)), how,
+                unknown, "contact")
+
+
+def contact_normal(ctx: Ctx, name: str, body: str, other: str) -> Msg | str:
+    """The common normal at the contact `name` of `body` and `other`, named as the notes name
+    a line: the segment from the contact to a circle's centre on it (a circle's centre lies
+    on the normal at its contact; the slides' rolling pair writes ∥_BF, ∥_AF, 001 4.4), the
+    centre of `other`'s circle first, else `body`'s; "the normal at J" when neither has a
+    circle with a named centre on that normal. "∥ normal" alone left a student to guess
+    which normal (issue 30, twenty-eighth round (c))."""
+    joint_ = next((j for j in ctx.model.joints if {j.a, j.b} == {body, other}
+                   and getattr(ctx.sol.geometry(j.id), "contact", None) is not None
+                   and ctx.contact(j) == name), None)
+    normal = getattr(ctx.sol.geometry(joint_.id).contact, "normal", ()) if joint_ is not None else ()
+    if len(normal) >= 2:
+        n = ctx.num(normal)
+        at = ctx.num(ctx.pos(name))
+        for b in (other, body):
+            for shape in ctx.model.bodies[b].shapes:
+                centre = getattr(shape, "center_point", None)      # a circle's, an arc's
+                if not centre or centre == name or centre not in ctx.inst.points:
+                    continue
+                r = [c - a for a, c in zip(at, ctx.num(ctx.pos(centre)))]
+                if abs(r[0] * n[1] - r[1] * n[0]) <= 1e-9 * (abs(r[0]) + abs(r[1])):
+                    return segment(name, centre)
+    return msg("dir.normal_at", point=Name(name))

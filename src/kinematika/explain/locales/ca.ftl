@@ -374,7 +374,7 @@ v-intro = Cada equació vectorial s’anota com als apunts: M: mòdul conegut; D
 a-intro = Conegudes les velocitats, tots els termes normals i de Coriolis són coneguts; les incògnites són els termes tangencials i relatius.
 a-intro_relative = Conegudes les velocitats, tots els termes normals són coneguts; les incògnites són els termes tangencials i relatius.
 a-intro_normal = Conegudes les velocitats, els termes normals són coneguts; les incògnites són els termes tangencials.
-eq-shared_rate = Els termes { $terms } tenen una sola incògnita, { $rate }: els seus mòduls són { $mags }.
+eq-shared_rate = Els termes { $terms } tenen una sola incògnita, { $rate }: els seus mòduls són { $mags }, i els seus dos ? compten com una.
 a-named = On una fórmula desenvolupada seria il·legible, les velocitats angulars trobades a «{ sec-velocities }» s’escriuen pel seu nom: { $name } per a la ω de { $body }, i així per a cada sòlid.
 driver-omega = Dada: { $sym } = { $value }.
 driver-omega_sense = Dada: { $sym } = { $value }, { $faster ->
@@ -536,7 +536,7 @@ dir-guide = guia { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
     }
-dir-normal = normal
+dir-normal_at = normal en { $point }
 how-prismatic = (enllaç prismàtic: sense rotació relativa)
 carry-anchor = De la resolució del grup: { $sym } = { $value }.
 sense-ccw = antihorari

@@ -296,7 +296,7 @@ v-intro = Each vector equation is annotated as in the notes: M: magnitude known;
 a-intro = With the velocities known, every normal term and every Coriolis term is known; the tangential and relative terms are the unknowns.
 a-intro_relative = With the velocities known, every normal term is known; the tangential and relative terms are the unknowns.
 a-intro_normal = With the velocities known, the normal terms are known; the tangential terms are the unknowns.
-eq-shared_rate = The terms { $terms } share one unknown, { $rate }: their magnitudes are { $mags }.
+eq-shared_rate = The terms { $terms } share one unknown, { $rate }: their magnitudes are { $mags }, so their two ? count as one.
 a-named = Where a formula written out would be past reading, the angular velocities found in “{ sec-velocities }” are written by name: { $name } for the ω of { $body }, and so for every body.
 driver-omega = Given: { $sym } = { $value }.
 driver-omega_sense = Given: { $sym } = { $value }, { $faster ->
@@ -425,7 +425,7 @@ rolling-centre = { $gear ->
         } without slipping on { $a }
     }, which does not move: the point { $point } of { $b } at the contact has no velocity, { $sym } = 0, so it is the instant centre of { $b }.
 dir-guide = guide of { $holder }
-dir-normal = normal
+dir-normal_at = normal at { $point }
 how-prismatic = (prismatic pair: no relative rotation)
 carry-anchor = From the solution of the group: { $sym } = { $value }.
 sense-ccw = counter-clockwise

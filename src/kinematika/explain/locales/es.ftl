@@ -290,7 +290,7 @@ v-intro = Cada ecuación vectorial se anota como en los apuntes: M: módulo cono
 a-intro = Una vez halladas las velocidades, todos los términos normales y de Coriolis son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-intro_relative = Una vez halladas las velocidades, todos los términos normales son conocidos; las incógnitas son los términos tangenciales y relativos.
 a-intro_normal = Una vez halladas las velocidades, los términos normales son conocidos; las incógnitas son los términos tangenciales.
-eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }.
+eq-shared_rate = Los términos { $terms } tienen una sola incógnita, { $rate }: sus módulos son { $mags }, y sus dos ? cuentan como una.
 a-named = Donde una fórmula desarrollada sería ilegible, las velocidades angulares halladas en «{ sec-velocities }» se escriben por su nombre: { $name } para la ω de { $body }, y así para cada sólido.
 driver-omega = Dato: { $sym } = { $value }.
 driver-omega_sense = Dato: { $sym } = { $value }, { $faster ->
@@ -400,7 +400,7 @@ rolling-centre = { $gear ->
             } sin deslizar sobre { $a }
     }, que no se mueve: el punto { $point } de { $b } en el contacto no tiene velocidad, { $sym } = 0, así que es el CIR de { $b }.
 dir-guide = guía de { $holder }
-dir-normal = normal
+dir-normal_at = normal en { $point }
 how-prismatic = (par prismático: sin rotación relativa)
 carry-anchor = De la resolución del grupo: { $sym } = { $value }.
 sense-ccw = antihorario

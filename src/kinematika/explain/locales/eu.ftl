@@ -302,7 +302,7 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M: modulua ez
 a-intro = Abiadurak ezagunak direnez, termino normal guztiak eta Coriolisen termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
-eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira.
+eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira; beraz, haien bi ? ikurrak ezezagun bakarra dira.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, «{ sec-velocities }» atalean aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
 driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
@@ -353,7 +353,7 @@ rolling-centre = { $gear ->
        *[other] { $b } solidoa { $a } solidoaren gainean errodatzen da irristatu gabe
     }, eta { $a } solidoa ez da mugitzen: kontaktuko { $point } puntuak, { $b } solidoarenak, ez du abiadurarik, { $sym } = 0; beraz, { $b } solidoaren biraketa-zentro instantaneoa da.
 dir-guide = { $holder } solidoaren gida
-dir-normal = normala
+dir-normal_at = { $point } puntuko normala
 how-prismatic = (lotura prismatikoa: biraketa erlatiborik gabe)
 carry-anchor = Taldearen ebazpenetik: { $sym } = { $value }.
 sense-ccw = erlojuaren orratzen aurkako noranzkoan

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import re
 from abc import ABC, abstractmethod
-from html import escape
 from typing import Any, Callable, Optional
 
 from babel.lists import format_list
@@ -996,26 +995,14 @@ class Renderer(ABC):
         write theirs with the same writer (`numerals.written`), to three digits."""
         return written(x, 4, self.decimal, self.power)
 
-    def bar(self, fig: Figure) -> tuple[str, Callable[[float], str], float]:
-        """A figure's scale bar: its unit, how its count is written, the size of one unit.
-        A numeric page's bar is in m/s or m/s² ("0,5 m/s"); a symbolic page's polygon in the
-        symbols' unit (`polygon.bar_unit`), the count written into the formula as the notes
-        write a multiple (v²/(2·R), 2·r·ω): its sample numbers have no unit to name. A
-        symbolic figure with no such unit keeps a bare number (issue 30, twentieth round (c)).
-        The count is written as SVG markup, each symbol set as a label's (`svg.name_markup`:
-        |a_P|/5 with an italic a and a subscript P, twenty-fifth round (b))."""
-        if not self.doc.symbolic:
-            return self.unit(fig.unit), self.bar_number, 1.0
-        if fig.bar is None:
-            return "", self.bar_number, 1.0
-        import sympy
-
-        from .svg import name_markup
-        from .unicode import unicode_formula
-
-        unit, size = fig.bar
-        return "", lambda n: unicode_formula(sympy.nsimplify(n) * unit, lambda s: name_markup(self.spelt(s)),
-                                             lambda text: self.decimals(escape(text, quote=False)), lang=self.lang), size
+    def bar(self, fig: Figure) -> tuple[str, Callable[[float], str]]:
+        """A figure's scale bar: its unit and how its count is written.
+        Every polygon is drawn at numbers, a symbolic page's at the values given under it, so
+        every bar reads as a numeric page's does, a round number in m/s or m/s² ("0,5 m/s"),
+        which a student measures the polygon with: a symbolic bar in the symbols ("|a_P|/5",
+        "r₁·v²/(5·r₂²)", the twentieth and twenty-fourth rounds') read oddly under a figure
+        drawn at r₁ = 0.15 (issue 30, twenty-eighth round (b))."""
+        return self.unit(fig.unit), self.bar_number
 
     def bar_number(self, x: float) -> str:
         """A scale bar's round length, with the language's decimal sign."""
@@ -1027,10 +1014,10 @@ class Renderer(ABC):
 
     # annotations and derived values ------------------------------------------------------------
     def ann(self, a: Ann) -> str:
-        """An M/D/? annotation of a term (seed 001): M, D or ?, a magnitude's formula (ω·AB), or
-        the direction ⊥ or ∥ a line."""
-        if a.code == "rate":            # an unknown rate times its arm (α·JS), shared by terms
-            return self.inline(a.ref)
+        """An M/D/? annotation of a term (seed 001): M, D or ?, a known magnitude's formula
+        (ω²·AB), or the direction ⊥ or ∥ a line. An unknown magnitude is "?" even when it is
+        a shared rate times its arm (α·JS, said in the sentence before the equation): the
+        notes never write a formula over an unknown (twenty-eighth round (c))."""
         if a.code in ("M", "D", "?"):
             if a.code == "M" and a.ref:
                 return self.inline(a.ref)

@@ -146,8 +146,8 @@ class HtmlRenderer(Renderer):
         and its caption."""
         caption = self.caption(fig)
         self.figures = getattr(self, "figures", 0) + 1
-        unit, number, per = self.bar(fig)
-        drawing = svg(fig, self.svg_label, unit, f"f{self.figures}", number, per)
+        unit, number = self.bar(fig)
+        drawing = svg(fig, self.svg_label, unit, f"f{self.figures}", number)
         return f"<figure>{drawing}<figcaption>{caption}</figcaption></figure>"
 
     def drawing(self, d: Drawing) -> str:

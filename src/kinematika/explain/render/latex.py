@@ -210,12 +210,8 @@ class LatexRenderer(Renderer):
     def figure(self, fig: Figure) -> str:
         """A polygon or figure as a TikZ picture, laid out as the SVG is, with its caption."""
         caption = self.caption(fig)
-        unit, number, per = self.bar(fig)
-        if self.doc.symbolic and fig.bar is not None:       # the bar's multiple of symbols, as math
-            import sympy
-
-            return tikz(fig, self.svg_label, unit, caption, lambda n: self.formula(sympy.nsimplify(n) * fig.bar[0]), per)
-        return tikz(fig, self.svg_label, unit, caption, lambda n: tex_text(number(n)), per)
+        unit, number = self.bar(fig)
+        return tikz(fig, self.svg_label, unit, caption, lambda n: tex_text(number(n)))
 
     def svg_label(self, s: Sym | str) -> Text:
         """A symbol or a polygon's point name in a figure: its measured size and, for a symbol, its LaTeX for TikZ."""
@@ -225,7 +221,7 @@ class LatexRenderer(Renderer):
         return text
 
 
-def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}", per: float = 1.0) -> str:
+def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}") -> str:
     """The figure as a TikZ picture 12 cm wide, laid out (labels placed) as the SVG is;
     `number` writes the scale bar's count as LaTeX."""
     lay = layout(fig, label)
@@ -255,9 +251,9 @@ def tikz(fig: Figure, label, unit: str, caption: str, number=lambda x: f"{x:g}",
         if lb.leader is not None:
             out.append(rf"\draw[very thin, color=k{colour}] {cm(*lb.leader[0])} -- {cm(*lb.leader[1])};")
         out.append(rf"\node[color=k{colour}, inner sep=0pt] at {cm(*lb.centre)} {{\small {lb.text.tex or tex_text(lb.text.raw)}}};")
-    count = bar_length(lay.k, per)
+    count = bar_length(lay.k)
     y = lay.height - 14
-    out.append(rf"\draw[|-|] {cm(MARGIN, y)} -- {cm(MARGIN + count * per * lay.k, y)} node[right] "
+    out.append(rf"\draw[|-|] {cm(MARGIN, y)} -- {cm(MARGIN + count * lay.k, y)} node[right] "
                rf"{{{number(count)} {unit}}};")
     out.append(r"\end{tikzpicture}\\[2pt]{\small " + caption + r"}\end{center}")
     return "\n".join(out) + "\n"

@@ -178,8 +178,8 @@ class MarkdownRenderer(Renderer):
         """A polygon or figure as an SVG data-URI image, with its caption in italics below."""
         caption = self.caption(fig)
         self.figures = getattr(self, "figures", 0) + 1
-        unit, number, per = self.bar(fig)
-        drawing = svg(fig, self.svg_label, unit, f"f{self.figures}", number, per)
+        unit, number = self.bar(fig)
+        drawing = svg(fig, self.svg_label, unit, f"f{self.figures}", number)
         return self.image(caption, drawing)
 
     def drawing(self, d: Drawing) -> str:

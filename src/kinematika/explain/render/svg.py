@@ -81,25 +81,13 @@ def sym_text(base: str, sub: str, sup: str, tex: str = "") -> Text:
 
 def sym_markup(base: str, sub: str, sup: str, weight: str = "bold") -> str:
     """A symbol's SVG markup: its letter in italics (bold in a label), its subscript and
-    superscript smaller and shifted, each part escaped. A label (`sym_text`) and a symbol in
-    a scale bar's formula (`name_markup`) are set alike: a bar's |a_P|/5 reads as the a_P
-    beside its arrow (issue 30, twenty-fifth round (b))."""
+    superscript smaller and shifted, each part escaped (a label's, `sym_text`)."""
     bold = ' font-weight="bold"' if weight == "bold" else ""
     out = f'<tspan font-style="italic"{bold}>{escape(base)}</tspan>'
     for part, shift in ((sub, "sub"), (sup, "super")):
         if part:
             out += f'<tspan baseline-shift="{shift}" font-size="70%">{escape(part)}</tspan>'
     return out
-
-
-def name_markup(name: str) -> str:
-    """A model's symbol name (a_P, R_wheel, omega_2, v) in a figure's running text, a
-    scale bar's formula: its letter in italics, its subscript set as a subscript
-    (`sym_markup`), never the raw underscore of its plain-text spelling."""
-    from .names import written
-
-    w = written(name)
-    return sym_markup(w.base, w.sub, w.sup, weight="normal")
 
 
 def plain_text(text: str) -> Text:
@@ -311,11 +299,10 @@ def _edge(start: tuple, box: tuple) -> tuple:
 
 
 def svg(fig: Figure, label: Callable[[Sym | str], Text], unit: str, prefix: str = "f",
-        number: Callable[[float], str] = lambda x: f"{x:g}", per: float = 1.0) -> str:
+        number: Callable[[float], str] = lambda x: f"{x:g}") -> str:
     """The figure as an <svg> element; `label` gives a symbol's text, `unit` the bar's unit,
     `prefix` keeps its ids apart from other figures' on the page; the bar is a round number
-    of `per` (a symbolic unit's drawn size, `bar_length`), written by `number` as SVG markup
-    (its symbols as `name_markup` sets them)."""
+    of units (`bar_length`), written by `number` with the language's decimal sign."""
     lay = layout(fig, label)
     height = lay.height
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0f}" '
@@ -356,23 +343,23 @@ def svg(fig: Figure, label: Callable[[Sym | str], Text], unit: str, prefix: str 
         out.append(f'<text x="{lb.centre[0]:.1f}" y="{lb.centre[1]:.1f}" fill="{lb.colour}" text-anchor="middle" '
                    f'dominant-baseline="central" stroke="white" stroke-width="3" '
                    f'paint-order="stroke">{lb.text.markup}</text>')
-    out.append(_scale_bar(lay, unit, number, per))
+    out.append(_scale_bar(lay, unit, number))
     out.append("</svg>")
     return "".join(out)
 
 
-def bar_length(k: float, per: float = 1.0) -> float:
-    """A scale bar's count of its unit: a round number (`nice`) of units `per` (1 for m/s;
-    a symbolic bar's unit at the drawn numbers, v²/R = 16) about 90 points long at `k`
-    points a model unit."""
-    return nice(90 / (k * per))
+def bar_length(k: float) -> float:
+    """A scale bar's count of its unit (m/s, m/s²): a round number (`nice`) of units about 90
+    points long at `k` points a unit."""
+    return nice(90 / k)
 
 
-def _scale_bar(lay: Layout, unit: str, number: Callable[[float], str], per: float = 1.0) -> str:
-    count = bar_length(lay.k, per)
-    px = count * per * lay.k
+def _scale_bar(lay: Layout, unit: str, number: Callable[[float], str]) -> str:
+    """The bar under a figure, `bar_length` units long, with its count and unit ("0,5 m/s")."""
+    count = bar_length(lay.k)
+    px = count * lay.k
     y = lay.height - 14
-    text = f"{number(count)} {escape(unit)}".strip()         # `number` writes markup (`name_markup`)
+    text = f"{number(count)} {escape(unit)}".strip()
     return (f'<line x1="{MARGIN}" y1="{y:.1f}" x2="{MARGIN + px:.1f}" y2="{y:.1f}" stroke="#222" '
             f'stroke-width="2"/><line x1="{MARGIN}" y1="{y - 4:.1f}" x2="{MARGIN}" y2="{y + 4:.1f}" '
             f'stroke="#222"/><line x1="{MARGIN + px:.1f}" y1="{y - 4:.1f}" x2="{MARGIN + px:.1f}" '
