@@ -150,12 +150,12 @@ def test_d_the_rod_centre_by_hand() -> None:
 
 @over(name=SEEDS, lang=LANGS)
 def test_d_o_prime_says_which_o(name: str, lang: str) -> None:
-    """Where a polygon letters another body's point at O (o′∈wheels), the caption does not
+    """Where a polygon letters another body's point at O (o∈wheels, twenty-eighth round (f); o′∈wheels before), the caption does not
     call o′ just "the image of O": it names the fixed point O of its body."""
     _, doc = explained(name)
     page = rendered(name, lang, drawings=False)
     for fig in (b for b in doc.blocks() if isinstance(b, Figure)):
-        if not any(label.startswith("o′∈") for label, _, _ in fig.points):
+        if not any(label.startswith("o∈") for label, _, _ in fig.points):
             continue
         keys = [m.key for n in fig.notes for m in _msgs(n)]
         assert "fig.o_prime_named" not in keys, keys

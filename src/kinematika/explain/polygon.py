@@ -56,7 +56,7 @@ def level_polygon(ctx: Ctx, equations: list[Equation], level: str, step: bool = 
                  unit="speed" if level == "v" else "accel", sample=ctx.symbolic, values=ctx.drawn_values())
     fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + images
-    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
+    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig, poly.symbols)
     return fig
 
 
@@ -151,8 +151,49 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
                  values=ctx.drawn_values())
     fig.arrows, fig.lines = _separated(poly.arrows)
     fig.points = [("o", (0.0, 0.0), "pole")] + poly.image_points()
-    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly)
+    fig.notes = pole_notes(fig, poly) + at_pole_notes(poly) + drawing_notes(fig, poly.symbols)
     return fig
+
+
+HEAD = 7.0              # an arrowhead's length, in its line's widths (`render.svg`'s marker)
+WIDTHS = {"result": 2.2}   # an arrow's line width (points) by style; 1.8 else (`render.svg.svg`)
+UNSEEN = 1.0            # an arrow shorter than its head (times this) shows the head alone
+
+
+def short_arrows(fig: Figure, symbols: dict) -> list:
+    """The symbols of the arrows too short to be seen as arrows at the scale the figure is
+    drawn at: shorter than their arrowhead (`UNSEEN`), they show the head and no line (C5-E.4's a_U,
+    1/32 of a_P, an arrowhead hidden at the pole; a_PU^t a stub at p). `symbols` names the
+    arrows drawn without a label (the blue ones, lettered by their images) by their ends."""
+    from .render.svg import bounds, points_per_unit
+
+    k = points_per_unit(*bounds(fig))
+    out: list = []
+    for a in fig.arrows:
+        head = HEAD * WIDTHS.get(a.style, 1.8)
+        sym = a.label if a.label is not None else symbols.get((a.start, a.end))
+        if sym is not None and sym not in out and math.dist(a.start, a.end) * k < UNSEEN * head:
+            out.append(sym)
+    return out
+
+
+def drawing_notes(fig: Figure, symbols: dict | None = None) -> list:
+    """The caption's word on how the polygon departs from a plain chain of arrows: a term
+    drawn beside its place (`_separated`: it would lie on another arrow) and joined back to
+    its ends by grey dashes. Captions said "head to tail" over terms set aside and tied by
+    dashes no sentence explained (001's a_EO2^n beside the blue o→e, C5-E.1's vertical
+    terms side by side); and the arrows too short to be seen at its scale (`short_arrows`),
+    named, since a term drawn longer than it is would be a lie and one unseen is lost: the
+    reader finds its value in the text (C5-E.4's a_U at the pole; issue 30, twenty-eighth
+    round (f))."""
+    out = [msg("fig.moved_aside")] if fig.lines else []
+    short = short_arrows(fig, symbols or {})
+    if short:
+        out.append(msg("fig.too_short", terms=Names(short), count=len(short)))
+        # the caption names them: no label beside an arrow no one sees, piled with the
+        # labels where the short terms meet (001's a_BA^t at the pole, C5-1.3's a_QS^n, a_EQ^n)
+        fig.arrows = [Arrow(a.start, a.end, None, a.style) if a.label in short else a for a in fig.arrows]
+    return out
 
 
 def at_pole_notes(poly: "_Builder") -> list:
@@ -189,7 +230,7 @@ def _o_prime(poly: "_Builder") -> Any:
     the fixed pivot O of the moving body pinned there to a body that does not move ("o′, the
     image of the fixed point O of the arm OC,"; twenty-fifth round d)."""
     ctx = poly.ctx
-    others = [n for n in poly.images if n.startswith("o′∈")]
+    others = [n for n in poly.images if n.startswith("o∈")]
     sym = poly.named["o′"][1]
     point = str(sym.sub)
     carriers = ctx.model.carriers(point)
@@ -216,6 +257,8 @@ class _Builder:
         self.size = max(ctx.scale_of("speed"), 1e-300)
         self.named: dict[str, tuple] = {}   # image -> (its place, the symbol of the motion ending there)
         self.centres: dict[str, Any] = {}   # an instant centre's point at rest (v_{I_rod}) -> its symbol
+        self.symbols: dict[tuple, Any] = {}  # an arrow's ends -> its symbol (a blue arrow is drawn without it)
+        self.sides: list[list[tuple]] = []  # each side drawn, as its terms' drawn vectors (`_repeated`)
 
     def at_pole(self, xy: tuple) -> bool:
         return math.hypot(*xy) <= SAME * self._scale()
@@ -264,8 +307,12 @@ class _Builder:
     def equation(self, eq: Equation) -> None:
         origin = (0.0, 0.0)
         for side in eq.sides:
+            if self._repeated(side):
+                continue
             tip = origin
-            for term in side:
+            for n, term in enumerate(side):
+                if n and term.kind not in RIGID and side[n - 1].kind in RIGID:
+                    self._vertex(eq, side[0], tip)
                 step = self.ctx.drawn(term.value)
                 if step[0] == 0 and step[1] == 0:
                     if term.kind == "point" and not term.sym.sup and tip == origin:
@@ -290,6 +337,41 @@ class _Builder:
                 self._image(eq.target.sym.sub, end)
             self._arrow(Arrow(origin, end, eq.target.sym, "result"), label=self.single)
 
+    def _repeated(self, side: list) -> bool:
+        """Whether a side repeats, in another order, the terms of a side already drawn to the
+        same image: the same vectors, each again (C5-E.1's a_C = a_C^t + a_C^n of Step 2, the
+        path's intrinsic components, after Step 1's a_C = a_O + a_CO^n + a_CO^t, the same two
+        vectors about the fixed O). Drawn, it is the other half of one parallelogram: five
+        labels round c where three say it (issue 30, twenty-eighth round (f))."""
+        steps = [s for s in (tuple(float(c) for c in self.ctx.drawn(t.value)[:2]) for t in side) if s != (0.0, 0.0)]
+        end = (sum(s[0] for s in steps), sum(s[1] for s in steps))
+        for drawn in self.sides:
+            if len(drawn) == len(steps) >= 2 and _close(_sum(drawn), end, self.size) and _same_vectors(drawn, steps, self.size):
+                return True
+        self.sides.append(steps)
+        return False
+
+    def _vertex(self, eq: Equation, first: Any, tip: tuple) -> None:
+        """Letter the vertex where a side's rigid-body terms end and its relative terms begin:
+        the point the equation is about, as a point of the body those terms rotate with
+        (001's rolling pair, a_{F∈N} = a_A + a_FA^n + a_FA^t + a_{F∈N rel R}: the tip after
+        a_FA^t is a_{F∈R}, an answer, and its vertex had no letter though the caption says
+        every image is lettered; issue 30, twenty-eighth round (f)). The body is the one
+        carrying the side's first point (and the point, when it is the model's: a contact's
+        point F is carried by none) whose motion there ends at that tip."""
+        if eq.point is None or first.kind != "point":
+            return
+        point, base = eq.point.point, str(first.sym.sub).partition("∈")[0]
+        motion = self.ctx.vel if eq.level == "v" else self.ctx.acc
+        model = self.ctx.model
+        for body in model.carriers(base) if base in model.points else []:
+            if point in model.points and body not in model.carriers(point):
+                continue
+            xy = tuple(float(c) for c in self.ctx.drawn(motion(body, point))[:2])
+            if _close(xy, tip, self.size):
+                self._image(self.ctx.point_label(point, body), tip)
+                return
+
     def _named(self, sym: Any, xy: tuple) -> None:
         """The image of the point `sym` (v_A, a_A) names, with its place and that symbol; an
         instant centre placed as a point (v_{I_rod}, no letter of its own) is kept apart, by
@@ -309,6 +391,8 @@ class _Builder:
     def _arrow(self, a: Arrow, label: bool = True) -> None:
         """Add an arrow once; a point's absolute motion wins over a term that is the same
         arrow from the pole (v_AO2 when O2 is fixed): blue, named by its image."""
+        if a.label is not None:
+            self.symbols.setdefault((a.start, a.end), a.label)
         a = a if label else Arrow(a.start, a.end, None, a.style)
         for i, b in enumerate(self.arrows):
             if _close(a.start, b.start, self.size) and _close(a.end, b.end, self.size):
@@ -316,6 +400,24 @@ class _Builder:
                     self.arrows[i] = a
                 return
         self.arrows.append(a)
+
+
+RIGID = ("rotation", "normal", "tangential")     # the kinds of a rigid body's terms about a point of it
+
+
+def _sum(steps: list[tuple]) -> tuple:
+    return (sum(s[0] for s in steps), sum(s[1] for s in steps))
+
+
+def _same_vectors(a: list[tuple], b: list[tuple], size: float) -> bool:
+    """Whether the lists of vectors a and b hold the same vectors, in any order."""
+    rest = list(b)
+    for v in a:
+        match = next((i for i, w in enumerate(rest) if _close(v, w, size)), None)
+        if match is None:
+            return False
+        rest.pop(match)
+    return True
 
 
 def _close(p: tuple, q: tuple, size: float) -> bool:
@@ -340,7 +442,10 @@ def _letter(label: str, taken: frozenset[str] = frozenset()) -> str:
     name, _, body = label.partition("∈")
     if not name or not name[0].isalpha():
         return ""
-    letter = name.lower() if name.lower() not in {"o", *taken} else name.lower() + "′"   # o is the pole
+    # o is the pole: O's image is o′; a body's point at O keeps its body and no prime (o∈wheels),
+    # so that o′ names one image, the bare O's (C5-E.1: "o′∈wheels" beside a caption's "o′, the
+    # image of the fixed point O of the arm", two points lettered o′; twenty-eighth round (f))
+    letter = name.lower() if name.lower() not in ({*taken} if body else {"o", *taken}) else name.lower() + "′"
     if re.fullmatch(r"j\d+", letter):
         letter = name            # a contact J10's image: j10 would read as a joint's id
     return letter + (f"∈{body}" if body else "")

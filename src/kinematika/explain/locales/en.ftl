@@ -216,6 +216,14 @@ fig-at_pole = { $count ->
     [one] { $images } is at the pole o, since { $zero }.
    *[other] { $images } are at the pole o, since { $zero }.
 }
+fig-moved_aside = A term that would lie on another arrow is drawn beside it, parallel and to scale; { $format ->
+        [md] dashed lines join
+       *[other] grey dashes join
+    } its ends to the points it runs between.
+fig-too_short = { $count ->
+    [one] { $terms } is too short to be seen at this scale (shorter than an arrowhead); its value is in the text.
+   *[other] { $terms } are too short to be seen at this scale (shorter than an arrowhead); their values are in the text.
+}
 fig-o_prime = The image of O is lettered o′, because the letter o names the pole.
 fig-o_prime_named = o′, the image of O,
 fig-o_prime_fixed = o′, the image of the fixed point O of { $body },

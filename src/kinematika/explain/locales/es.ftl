@@ -222,6 +222,14 @@ fig-at_pole = { $count ->
     [one] { $images } está en el polo o, ya que { $zero }.
    *[other] { $images } están en el polo o, ya que { $zero }.
 }
+fig-moved_aside = Un término que quedaría sobre otra flecha se dibuja a su lado, paralelo y a escala; { $format ->
+        [md] unas líneas discontinuas unen
+       *[other] unos trazos grises unen
+    } sus extremos con los puntos entre los que va.
+fig-too_short = { $count ->
+    [one] { $terms } es demasiado corto para verse a esta escala (más corto que una punta de flecha); su valor está en el texto.
+   *[other] { $terms } son demasiado cortos para verse a esta escala (más cortos que una punta de flecha); sus valores están en el texto.
+}
 fig-o_prime = La imagen de O se designa o′, porque la letra o designa el polo.
 fig-o_prime_named = o′, la imagen de O,
 fig-o_prime_fixed = o′, la imagen del punto fijo O de { $body },

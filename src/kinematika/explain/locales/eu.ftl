@@ -216,6 +216,14 @@ fig-at_pole = { $count ->
     [one] { $images } o poloan dago, { $zero } baita.
    *[other] { $images } o poloan daude, { $zero } baita.
 }
+fig-moved_aside = Beste gezi baten gainean legokeen terminoa haren alboan marrazten da, paraleloan eta eskalan; { $format ->
+        [md] marra etenek
+       *[other] marra eten grisek
+    } haren muturrak lotzen dituzte bere bi puntuekin.
+fig-too_short = { $count ->
+    [one] { $terms } laburregia da eskala honetan ikusteko (gezi-punta bat baino laburragoa); haren balioa testuan dago.
+   *[other] { $terms } laburregiak dira eskala honetan ikusteko (gezi-punta bat baino laburragoak); haien balioak testuan daude.
+}
 fig-o_prime = O puntuaren irudia o′ izendatzen da, o letrak poloa izendatzen baitu.
 fig-o_prime_named = o′, O-ren irudia,
 fig-o_prime_fixed = o′, { $body } solidoaren O puntu finkoaren irudia,
