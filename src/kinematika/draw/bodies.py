@@ -575,7 +575,7 @@ def hatched_edge(ctx: Context, p: np.ndarray, q: np.ndarray, side: np.ndarray, g
     ctx.avoid(p + 0.5 * band * side, q + 0.5 * band * side, weight=0.7)
     ctx.avoid(p + band * side, q + band * side, weight=0.7)
     deep = MATERIAL * ctx.size
-    ctx.area(p, q, q + deep * side, p + deep * side)
+    ctx.area(p, q, q + deep * side, p + deep * side, ground=True)
 
 
 def _points(ctx: Context) -> None:
