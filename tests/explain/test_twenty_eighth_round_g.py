@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .helpers import NOTES_SEEDS, RECORDED_LANGS, explained, over
+from .helpers import NOTES_SEEDS, RECORDED_LANGS, over
 from .test_twenty_seventh_round_f import arrows_of, figures, ground_edges
 
 
