@@ -132,10 +132,11 @@ def test_a_scale_bar_is_a_short_product_or_a_reference_vector(name):
 
 
 def test_the_bicycles_acceleration_bar_is_measured_in_a_p():
-    """C5-E.6 at its draw_at numbers (R_roda 0.35, R 0.1, r 0.04, L 0.17, v 5, v̇ 0.5): the
-    chainring turns at ω = (r/R)(v/R_roda) = 40/7 rad/s, so the pedal P, L below the crank
-    axle, has a_P = (v̇ − L (r/R) v̇/R_roda, L ω²) (the notes' v(P) = v − L (r/R) v/R_roda,
-    differentiated; the normal part towards C), |a_P| = 5.5657. The bar is in |a_P|, not in
+    """C5-E.6 at its draw_at numbers (R_roda 0.35, R 0.1, r 0.05, L 0.15, v 5, v̇ 0.5; the
+    drive drawn larger in the twenty-eighth round (g)): the chainring turns at
+    ω = (r/R)(v/R_roda) = 50/7 rad/s, so the pedal P, L below the crank axle, has
+    a_P = (v̇ − L (r/R) v̇/R_roda, L ω²) (the notes' v(P) = v − L (r/R) v/R_roda,
+    differentiated; the normal part towards C), |a_P| = 7.6631. The bar is in |a_P|, not in
     the product L·r²·v²/(R²·R_roda²) of five symbols, and reads so in every language."""
     _, doc = explained("seed_c5_e6_bicycle")
     from kinematika.explain.document import Figure
@@ -144,7 +145,7 @@ def test_the_bicycles_acceleration_bar_is_measured_in_a_p():
     assert accel
     unit, size = accel[-1]
     assert unit == sympy.Abs(sympy.Symbol("a_P"))
-    R_w, R, r, L, v, vd = 0.35, 0.1, 0.04, 0.17, 5.0, 0.5
+    R_w, R, r, L, v, vd = 0.35, 0.1, 0.05, 0.15, 5.0, 0.5
     omega = (r / R) * (v / R_w)
     assert size == pytest.approx(math.hypot(vd - L * (r / R) * vd / R_w, L * omega**2), rel=1e-9)
     for lang in LANGS:
