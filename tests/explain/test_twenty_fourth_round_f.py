@@ -25,7 +25,18 @@ from .helpers import LANGS, NOTES_SEEDS, over, recorded_pages
 # (seed, label text) -> the bodies whose lines it may cross
 # (none left: C5-E.2's "gurpil zentral finkoa" and C5-E.1's "arm OC" found clear places in the
 # twenty-seventh round (c), the one named without its bracket, the other led from along its bar)
-KNOWN: dict[tuple[str, str], set] = {}
+# (twenty-eighth round (g): C5-1.4's two centres at O, the carrier's and the ring's, named on one
+# line of 95 to 120 points in Spanish, Catalan and Basque, inside the sun's disc of 51 points'
+# radius cut by the carrier's three arms and the sun's radii, and anywhere outside it nearer
+# another point than O (twenty-seventh round (g)); C5-E.6's sprocket, on its own rear wheel's
+# radii: the wheel's quadrants are narrower than its name, and outside the wheel the chain's
+# and chainring's names take the room above the drive)
+KNOWN: dict[tuple[str, str], set] = {
+    ("seed_c5_1_4_epicyclic", "$I_{\\mathrm{portasatélites}}$, $I_{\\mathrm{corona}}$"): {"carrier"},
+    ("seed_c5_1_4_epicyclic", "$I_{\\mathrm{portador}}$, $I_{\\mathrm{corona}}$"): {"carrier"},
+    ("seed_c5_1_4_epicyclic", "$I_{\\mathrm{eramailea}}$, $I_{\\mathrm{koroa}}$"): {"carrier"},
+    **{("seed_c5_e6_bicycle", word): {"rear"} for word in ("sprocket", "piñón", "pinyó", "pinoia")},
+}
 
 
 def layouts(name: str, lang: str) -> list:

@@ -109,6 +109,8 @@ def _body(ctx: Context, body: BodyView) -> None:
             anchor = shape_anchor(shape, ring_band(ctx, shape))
             spots = shape_spots(shape, ring_band(ctx, shape))
             prefer = UP_LEFT if shape.ring else None
+        elif spots is not None and shape.kind == "circle" and not shape.ring:
+            spots = _wheel_spots(spots, shape_spots(shape))
     if anchor is None and pts:
         anchor = pts[0]
     if anchor is not None:
@@ -116,6 +118,20 @@ def _body(ctx: Context, body: BodyView) -> None:
         ctx.label(anchor, name, body.colour, 5, f"body:{body.name}", body=body.name, side=side, prefer=prefer,
                   group=f"body:{body.name}", style="italic", radius=BAR_WIDTH / 2 if side is not None else 0.0,
                   spots=spots)
+
+
+def _wheel_spots(spots: np.ndarray, wheel: Optional[np.ndarray]) -> np.ndarray:
+    """A crank's name's spots (`bar_spots`) and its disc's (`shape_spots`): a crank on a
+    disc is one body, named from either. C5-E.6's chainring lies inside the chain's loop,
+    and its crank's stretch there runs by the frame's bar: led from the crank alone, its
+    name crossed the frame and the chain, or went under the ground (issue 30,
+    twenty-eighth round (g)); from its disc's top it crosses the chain's run alone. The
+    disc's spots at two depths: a chain wrapped round the rim and a frame through the axle
+    leave a narrow band between them."""
+    if wheel is None:
+        return spots
+    centre = wheel.mean(axis=0)
+    return np.vstack([spots, wheel, centre + 0.75 * (wheel - centre)])     # and nearer its centre
 
 
 def _tag(ctx: Context, body: Any) -> str:
@@ -575,7 +591,7 @@ def hatched_edge(ctx: Context, p: np.ndarray, q: np.ndarray, side: np.ndarray, g
     ctx.avoid(p + 0.5 * band * side, q + 0.5 * band * side, weight=0.7)
     ctx.avoid(p + band * side, q + band * side, weight=0.7)
     deep = MATERIAL * ctx.size
-    ctx.area(p, q, q + deep * side, p + deep * side)
+    ctx.area(p, q, q + deep * side, p + deep * side, ground=True)
 
 
 def _points(ctx: Context) -> None:

@@ -120,14 +120,15 @@ class Context:
         self.add("clear", [np.asarray(p, dtype=float) for p in polyline], avoid=weight,
                  radius=radius, width=width, zorder=0, **({"group": f"{role}:{owner}"} if owner else {}))
 
-    def area(self, *polygon: Any) -> None:
+    def area(self, *polygon: Any, ground: bool = False) -> None:
         """The region the body being drawn (`owner`) covers, a closed polygon through these
         points (a wheel's disc, a plate; a ring's band as its outer circle then its inner one
         backwards): another body's name or vector value may not sit on it (`draw.labels`,
-        `LabelBoard.area`). Nothing is painted."""
+        `LabelBoard.area`); `ground`: the material beyond a fixed edge, under the ground's
+        line (`LabelBoard.area`'s `ground`). Nothing is painted."""
         if self.owner:
             self.add("clear", [np.asarray(p, dtype=float) for p in polygon], avoid=0.0, zorder=0,
-                     group=f"area:{'+'.join(self.welded(self.owner))}")
+                     group=f"{'ground-area' if ground else 'area'}:{'+'.join(self.welded(self.owner))}")
 
     def welded(self, body: str) -> list[str]:
         """`body` and the moving bodies welded to it, directly or through others (one rigid

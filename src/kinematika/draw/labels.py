@@ -64,6 +64,8 @@ BODY_CROSS = 60.0        # a leader across a drawn body's outline (a wheel's rim
 BAR_CROSS = 200.0        # a leader across another body's bar, each time: half a name on that body (`AREA`)
 AREA = 400.0            # a body's name or a vector's value over another body's area or over hatching,
                         # × the box's part covered; and for each line of another body through its box
+GROUND = 2.5            # × `AREA`: a body's name or a vector's value beyond the ground's line, in its material
+                        # (`LabelBoard.area`'s `ground`): worse than a leader across a bar or two (`BAR_CROSS`)
 AREA_GRID = (8, 4)      # points across and up a label's box tested for lying in a body's area
 LINE_OVER = 150.0        # a label across a drawn line that is not another body's (its own body's outline,
                          # hatching, a construction line), each line: worse than a leader across one (`BODY_CROSS`)
@@ -134,6 +136,7 @@ class LabelBoard:
     owners: list[str] = field(default_factory=list)        # each obstacle's body ("" for none)
     bars: list[bool] = field(default_factory=list)         # whether each obstacle is a bar
     areas: list[tuple[str, np.ndarray]] = field(default_factory=list)   # (body or "" for hatching, polygon, data)
+    grounds: list[bool] = field(default_factory=list)      # whether each area is the material beyond a ground's line
     arrows: list[np.ndarray] = field(default_factory=list)  # a polygon's arrows, (start, end) data
     heads: list[np.ndarray] = field(default_factory=list)  # a mechanism's arrows: (start, end), data
     widths: list[float] = field(default_factory=list)      # each obstacle's drawn width, points (0: thin)
@@ -159,14 +162,17 @@ class LabelBoard:
         self.bars.append(bar)
         self.widths.append(width)
 
-    def area(self, owner: str, polygon: Any) -> None:
+    def area(self, owner: str, polygon: Any, ground: bool = False) -> None:
         """The region body `owner` covers (a closed polygon, data coordinates: a wheel's disc,
         a plate, a ring's band), which another body's name or a vector's value does not sit
         on (`Layout._areas`); `owner` "" for a hatched fill (the frame's hatching), which no
         name or value sits on, its own body's neither: text over hatching is not read; `owner`
         names the bodies welded together as one piece, joined by "+" (`draw.context.Context.
-        welded`): a name is at home on any of them."""
+        welded`): a name is at home on any of them. `ground`: the fixed body's material beyond
+        a ground's line (`draw.bodies.hatched_edge`), weighed `GROUND` times another body's
+        area (`Layout._areas`)."""
         self.areas.append((owner, np.asarray(polygon, dtype=float)))
+        self.grounds.append(ground)
 
     def tip(self, point: Any) -> None:
         """An arrow's tip: no label may cover its head (`TIP` points around it), which in a
@@ -272,8 +278,10 @@ class Layout:
         widths = board.widths if len(board.widths) == len(board.obstacles) else [0.0] * len(board.obstacles)
         self.drawn, self.drawn_line, self.drawn_owner, self.drawn_width = _drawn_lines(
             board.obstacles, owners, ax.transData, widths)
+        grounds = board.grounds if len(board.grounds) == len(board.areas) else [False] * len(board.areas)
         self.areas = [(owner, Path(ax.transData.transform(poly))) for owner, poly in board.areas
                       if len(poly) >= 3]
+        self.grounds = [g for (_, poly), g in zip(board.areas, grounds) if len(poly) >= 3]
         dots = [lb.anchor for lb in self.labels if lb.gid.startswith(DOT_GIDS)]
         self.dots = ax.transData.transform(np.array(dots)) if dots else np.zeros((0, 2))
         solid = self.obstacles[self.weights >= 1.0]
@@ -527,10 +535,24 @@ class Layout:
         a name inside another wheel, clear of its rim, was free and read as that wheel's
         (C5-E.6's quadre on the front wheel, C5-E.4's xassís in the left wheel, C5-1.4's
         portador in planet 2, C5-1.3's v_E on the support; twenty-first round (d)). Labels of
-        points and centres are not weighed: they sit on their point, wherever it is."""
+        points and centres are not weighed: they sit on their point, wherever it is.
+
+        The ground's material beyond its line (`LabelBoard.area`'s `ground`) weighs `GROUND`
+        times as much: a moving body's name under the ground is read as the ground's, and no
+        reader looks there for a wheel's or a chainring's name. Weighed as another body's
+        area alone it cost less than a leader across one bar and a rim, and C5-E.6's
+        chainring, inside the chain's loop, was named under the ground (issue 30,
+        twenty-eighth round (g))."""
         owner = label_owner(label.gid)
-        others = [path for body, path in self.areas if owner is not None and owner not in body.split("+")]
-        return AREA * covered_part(boxes, others) if others else np.zeros(len(boxes))
+        if owner is None:
+            return np.zeros(len(boxes))
+        cost = np.zeros(len(boxes))
+        for ground, weight in ((False, AREA), (True, GROUND * AREA)):
+            others = [path for (body, path), g in zip(self.areas, self.grounds)
+                      if g == ground and owner not in body.split("+")]
+            if others:
+                cost += weight * covered_part(boxes, others)
+        return cost
 
     def _lines_under(self, label: Label, boxes: np.ndarray) -> np.ndarray:
         """What a label costs for lying across drawn lines (a body's outline, bar, rim or

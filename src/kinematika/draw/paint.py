@@ -40,8 +40,9 @@ def paint_mark(cv: Canvas, m: Mark) -> Optional[Any]:
         cv.label(pts[0], m.text, m.colour, m.priority, m.gid, m.prefer, weight=m.weight,
                  style=m.style, size=m.size or LABEL_SIZE, shaft=m.shaft, spots=m.spots)
         return None
-    if m.kind == "clear" and m.group.startswith("area:"):
-        cv.board.area(m.group.removeprefix("area:"), pts)
+    if m.kind == "clear" and m.group.startswith(("area:", "ground-area:")):
+        kind, _, owner = m.group.partition(":")
+        cv.board.area(owner, pts, ground=kind == "ground-area")
         return None
     if m.kind == "clear" and m.group.startswith("head:"):
         cv.board.head(*pts[:2])

@@ -76,12 +76,17 @@ def arrows(vectors: list[VectorView], size: float, bars: Optional[list] = None,
     the bar, where it can be seen. A velocity always starts at its point, as the notes draw
     it (issue 30, sixteenth round (f): C5-2.2's v_O and v_P, along the chassis, ended at
     their points and read as velocities of other points): along a bar it is drawn over the
-    bar, above it (`arrow_mark`'s zorder). An arrow that would run from its point into the
-    ground (across one of `grounds`) is drawn ending at its point instead (`off_ground`)."""
+    bar, above it (`arrow_mark`'s zorder), and into the ground across its line, over it
+    (its value kept off the ground: `draw.labels.GROUND`). Drawn ending at its point, as
+    round 27 (f) drew one that ran into the ground, it was read as applied elsewhere
+    (C5-1.2's v_J∈OJ, C5-E.3's v_B; issue 30, twenty-eighth round (g)). An acceleration
+    that would run from its point into the ground (across one of `grounds`) is drawn
+    ending at its point instead (`off_ground`)."""
     largest = arrow_scales(vectors)
     out = [arrow_for(v, largest[v.kind], size) for v in vectors]
     out = [off_bars(a, bars or [], size) if a.view.kind == "acceleration" else a for a in out]
-    return [off_ground(a, grounds or [], bars or [], size) for a in out]
+    return [off_ground(a, grounds or [], bars or [], size) if a.view.kind == "acceleration" else a
+            for a in out]
 
 
 def off_ground(arrow: Arrow, grounds: list, bars: list, size: float) -> Arrow:
