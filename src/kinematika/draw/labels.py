@@ -54,6 +54,7 @@ DOT_NEAR = 4.0           # points: a leader passing this close to another label'
 
 # cost weights
 OVERLAP, OVERLAP_AREA, OUTSIDE, COVER, LEADER_CROSS = 400.0, 400.0, 1000.0, 5.0, 60.0
+STUCK = OVERLAP          # a label is stuck when its place costs this much more than its cheapest place (`Layout._unstick`)
 LEADER_VALUE = 15.0      # a mechanism vector's value on a leader (placed `LEADER` or more from its arrow)
 OUTSIDE_VALUE = 120.0    # a mechanism vector's value out of the axes, × the part out: the axes grow to it
 LEADER_OVER = 450.0      # a leader across another label's box, for labels not on an arrow (`Label.along`): worse than a name on another body (`AREA`)
@@ -329,7 +330,7 @@ class Layout:
 
     def _unstick(self, base: list, cands: list, choice: list[int]) -> None:
         """Move two labels at once where moving one cannot help: a label whose place costs at
-        least `OVERLAP` more than its cheapest place of its own tries its `TRIES` cheapest places
+        least `STUCK` more than its cheapest place of its own tries its `TRIES` cheapest places
         (`base`), each with the labels whose boxes it would cover moved to their best
         places around it; the first arrangement with a lower total cost (every label's own
         cost and its cost against the others) is kept. One label at a time (the refinement)
@@ -341,7 +342,7 @@ class Layout:
         total = self._total(base, cands, choice)
         for i in range(n):
             now = base[i][choice[i]] + self._mutual(i, cands, choice)[choice[i]]
-            if now - base[i].min() < OVERLAP:
+            if now - base[i].min() < STUCK:
                 continue
             for k in np.argsort(base[i], kind="stable")[:TRIES]:
                 if base[i][k] >= now:
@@ -644,7 +645,10 @@ class Layout:
         boxes, dist, _, at, _ = cand
         cost = np.zeros(len(boxes))
         far = np.flatnonzero(dist >= LEADER)
-        way = far if label_owner(label.gid) is None else np.arange(len(boxes))
+        # a body's name is read as the side its short way ends on; a vector's value by the arrow
+        # it sits beside: one inside a slot crosses the slot's line by any way out of it (C5-1.2's
+        # v_J∈OJ, started at J in the twenty-eighth round (g), went out on a 78-point leader)
+        way = np.arange(len(boxes)) if label.gid.startswith("body:") else far
         if len(way) and len(self.outlines):
             cost[way] = self._outlines_crossed(label, at[way], _edges(at[way], boxes[way]))
         if not len(far) or not len(self.obstacles):
