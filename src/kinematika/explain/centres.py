@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from itertools import combinations
 from typing import Any, Literal, Optional, overload
 
+from ..joints.capabilities import Centre
 from ..questions.centres import all_centres, centre_line, same_line
 from .asked import worked
 from .context import Ctx
@@ -258,7 +259,8 @@ def axle_centres(ctx: Ctx, made: dict, asked: set[frozenset]) -> set[frozenset]:
               and QUESTIONS[q.kind].needs_rate and isinstance(q.target, str)
               and (ctx.rel(q.relative_to) or ctx.frame) == ctx.frame}
     keys = {frozenset((ctx.frame, b)) for b in bodies if b != ctx.frame}
-    return {k for k in keys if k in made and made[k].how == "joint" and made[k].joint_type == "revolute"}
+    return {k for k in keys if k in made and made[k].how == "joint"
+            and ctx.model.joint(made[k].via[0]).kind.centre is Centre.PIN}
 
 
 def kin_centres(ctx: Ctx, asked: set[frozenset]) -> set[frozenset]:
