@@ -22,16 +22,9 @@ import kinematika
 from kinematika.explain import build, render
 
 from .helpers import LANGS, SEEDS, explained, model_tree, over, rendered
+from .test_twenty_fourth_round_e import ONE
 
 # the sentence after the legend for a letter that is also a point of the page (24th round (e))
-ONE = {"en": {"M": "Here M marks a known magnitude; it is not the point M.",
-              "D": "Here D marks a known direction; it is not the point D."},
-       "es": {"M": "Aquí M indica un módulo conocido; no es el punto M.",
-              "D": "Aquí D indica una dirección conocida; no es el punto D."},
-       "ca": {"M": "Aquí M indica un mòdul conegut; no és el punt M.",
-              "D": "Aquí D indica una direcció coneguda; no és el punt D."},
-       "eu": {"M": "Hemen M letrak modulu ezaguna adierazten du; ez da M puntua.",
-              "D": "Hemen D letrak norabide ezaguna adierazten du; ez da D puntua."}}
 CLASH = re.compile(r"not the points? |no es el punto |no és el punt |ez da [MD] puntua|no son los puntos "
                    r"|no són els punts |ez dira M eta D puntuak")
 
