@@ -1066,10 +1066,5 @@ def _edges(starts: np.ndarray, boxes: np.ndarray) -> np.ndarray:
 
 
 def _edge(start: np.ndarray, box: np.ndarray) -> np.ndarray:
-    """Where the segment from `start` to the centre of `box` enters the box."""
-    centre = (box[:2] + box[2:]) / 2
-    d = centre - start
-    half = (box[2:] - box[:2]) / 2
-    with np.errstate(divide="ignore"):
-        t = np.min(np.where(np.abs(d) > 1e-9, half / np.abs(np.where(d == 0, 1, d)), np.inf))
-    return centre - min(t, 1.0) * d
+    """Where the segment from `start` to the centre of `box` enters the box (`_edges` of one)."""
+    return _edges(np.asarray(start, dtype=float)[None, :], np.asarray(box, dtype=float)[None, :])[0]
