@@ -184,22 +184,33 @@ def _recording():
     `kinematika.draw.svg`, as `Drawing.svg` calls it) is also recorded as a drawing's, with
     the lines drawn under its labels (`_lines_drawn`) as its `recorded_lines`, and every mark
     painted on its figure (`draw.paint.paint_mark`'s, data coordinates) as its `recorded_marks`
-    (one list a figure, shared by the layouts tried while its limits grew)."""
+    (one list a figure, shared by the layouts tried while its limits grew). Each mechanism
+    drawing as a whole is recorded as a "figures" entry: (its options, the marks last painted,
+    the labels last placed, the data → display transform), what `figures` reads."""
     from kinematika import draw as draw_package
-    from kinematika.draw import labels, paint
+    from kinematika.draw import figure, labels, paint
     from kinematika.explain.render import svg as svg_module
 
-    found: dict[str, list] = {"labels": [], "polygons": [], "areas": [], "layouts": [], "drawings": []}
+    found: dict[str, list] = {"labels": [], "polygons": [], "areas": [], "layouts": [], "drawings": [], "figures": []}
     init, run, place = labels.Layout.__init__, labels.Layout.run, svg_module._place
-    paint_mark, svg = paint.paint_mark, draw_package.svg
+    paint_mark, svg, paint_all = paint.paint_mark, draw_package.svg, figure.paint
     drawing = [0]           # inside a mechanism drawing
+    seen: dict = {}         # the drawing being made: its marks, axes and labels as last made
 
     def recorded_svg(*args, **kw):
         drawing[0] += 1
+        seen.clear()
         try:
-            return svg(*args, **kw)
+            out = svg(*args, **kw)
         finally:
             drawing[0] -= 1
+        options = {k: v for k, v in kw.items() if k not in ("bare", "lang")}
+        found["figures"].append((options, seen["marks"], seen.get("placed", []), seen["ax"].transData))
+        return out
+
+    def recorded_paint(cv, marks):
+        seen["marks"], seen["ax"] = list(marks), cv.ax
+        return paint_all(cv, marks)
 
     def recorded_init(self, board, ax):
         init(self, board, ax)
@@ -214,6 +225,7 @@ def _recording():
         found["layouts"].append((out, self))
         if hasattr(self, "recorded_lines"):
             found["drawings"].append((out, self))
+            seen["placed"] = out
         return out
 
     def recorded_place(lay, items):
@@ -228,12 +240,12 @@ def _recording():
         return paint_mark(cv, m)
 
     labels.Layout.__init__, labels.Layout.run, svg_module._place = recorded_init, recorded_run, recorded_place
-    paint.paint_mark, draw_package.svg = recorded_paint_mark, recorded_svg
+    paint.paint_mark, draw_package.svg, figure.paint = recorded_paint_mark, recorded_svg, recorded_paint
     try:
         yield found
     finally:
         labels.Layout.__init__, labels.Layout.run, svg_module._place = init, run, place
-        paint.paint_mark, draw_package.svg = paint_mark, svg
+        paint.paint_mark, draw_package.svg, figure.paint = paint_mark, svg, paint_all
 
 
 def _lines_drawn(board, ax) -> list:
@@ -258,6 +270,16 @@ def recorded_pages(kind: str, langs: tuple = RECORDED_LANGS) -> dict:
         for lang in langs:
             rendered(name, lang, "md")
     return {(name, lang): _LAYOUTS[(name, lang)][kind] for name in NOTES_SEEDS for lang in langs}
+
+
+def figures(name: str, lang: str) -> list:
+    """Each mechanism drawing of one of the notes' seeds' pages in `lang`: (its options, its
+    marks, its labels' placements, its data → display transform), as `draw.svg` made them
+    while `rendered` wrote the page (`_recording`'s "figures"): drawn once a run for every
+    test that reads them."""
+    assert (name, lang, "md", True) in RECORDED, f"{name} in {lang} is not a recorded page"
+    rendered(name, lang, "md")
+    return _LAYOUTS[(name, lang)]["figures"]
 
 
 def over(**grids) -> Any:

@@ -20,7 +20,8 @@ import re
 import numpy as np
 
 from .helpers import LANGS, SEEDS, explained, over, rendered
-from .test_twenty_seventh_round_f import arrows_of, figures
+from .helpers import figures
+from .test_twenty_seventh_round_f import arrows_of
 
 C5_1_8 = "seed_c5_1_8_contact_points"
 

@@ -14,7 +14,8 @@ from __future__ import annotations
 import numpy as np
 
 from .helpers import NOTES_SEEDS, RECORDED_LANGS, over
-from .test_twenty_seventh_round_f import arrows_of, figures, ground_edges
+from .helpers import figures
+from .test_twenty_seventh_round_f import arrows_of, ground_edges
 
 
 def _point_of(gid: str) -> str:

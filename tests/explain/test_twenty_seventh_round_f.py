@@ -18,48 +18,13 @@ model or the page's own text, never against numbers the drawing code produced.
 """
 from __future__ import annotations
 
-import functools
 import itertools
 import math
 import re
 
 import numpy as np
 
-from .helpers import NOTES_SEEDS, RECORDED_LANGS, explained, over, plain_page
-
-
-@functools.lru_cache(maxsize=None)
-def figures(name: str, lang: str) -> list:
-    """Each drawing of the seed's page in `lang`: (options, marks, placements, data → display
-    transform), as `draw.svg` made it."""
-    from kinematika.draw import figure, labels
-    from kinematika.draw import svg as draw_svg
-    from kinematika.explain.document import Drawing
-
-    _, doc = explained(name)
-    found: list = []
-    run, paint = labels.Layout.run, figure.paint
-    seen: dict = {}
-
-    def recorded_paint(cv, marks):
-        seen["marks"], seen["ax"] = list(marks), cv.ax
-        return paint(cv, marks)
-
-    def recorded_run(self):
-        out = run(self)
-        seen["placed"] = out
-        return out
-
-    labels.Layout.run, figure.paint = recorded_run, recorded_paint
-    try:
-        for block in doc.blocks():
-            if isinstance(block, Drawing):
-                seen.clear()
-                draw_svg(block.solution, bare=True, lang=lang, **block.options)
-                found.append((block.options, seen["marks"], seen.get("placed", []), seen["ax"].transData))
-    finally:
-        labels.Layout.run, figure.paint = run, paint
-    return found
+from .helpers import NOTES_SEEDS, RECORDED_LANGS, explained, figures, over, plain_page
 
 
 def ground_edges(marks: list) -> list:

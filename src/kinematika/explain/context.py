@@ -314,6 +314,12 @@ def read_off(ctx: "Ctx", term: Sym, length: Any, value: Any) -> list:
     return (["−"] if sign < 0 else []) + ["|", term, "| / ", length]
 
 
+# The longest factor `read_along` simplifies (sympy's operations): a factor a reader reads off
+# an arm is short (r, 3·r/5, √3·r); a solved four-bar's closed form (75 operations) took 4 s of
+# `sympy.simplify` a read-off and came back no shorter, so it is written as solved.
+SIMPLIFIED_OPS = 30
+
+
 def read_along(ctx: "Ctx", term: Sym, length: Any, rate: Sym, arm: Optional[tuple]) -> Optional[list]:
     """How a rate is read off its term on a symbolic page: from one component of the term,
     "along x: a_H = −α·R ⇒ " (written before the rate, `Derived.lead`), never from a
@@ -344,7 +350,9 @@ def read_along(ctx: "Ctx", term: Sym, length: Any, rate: Sym, arm: Optional[tupl
         axis = "y"
     else:
         axis = min(parts, key=lambda k: (sympy.count_ops(parts[k][1]), k))
-    sign, part = parts[axis][0], sympy.simplify(parts[axis][1])
+    sign, part = parts[axis]
+    if sympy.count_ops(part) <= SIMPLIFIED_OPS:
+        part = sympy.simplify(part)
     value = Value(part, "len")
     factor = [value] if part.is_Symbol else ["(", value, ")"]
     arm_is = [length, " = ", Value(ctx.clean(tuple(arm), "len"), "len"), "; "]
