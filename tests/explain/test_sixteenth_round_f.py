@@ -3,8 +3,9 @@ seeds (docs/explain.md, "Sixteenth round (f)").
 
 - a mechanism figure's caption names every velocity arrow the figure draws, a relative one
   too (001's prismatic pair drew v_B∈N rel. M under a caption naming two arrows);
-- a velocity arrow starts at its point (C5-2.2's v_O and v_P ended there), unless the ground
-  is in the way (twenty-seventh round (f));
+- a velocity arrow starts at its point (C5-2.2's v_O and v_P ended there): read since the
+  twenty-eighth round (g), which made it hold where the ground is in the way too, by
+  test_twenty_eighth_round_g.py's `test_a_velocity_starts_at_its_point`;
 - the M/D marks of the equations are never a name on the page (C5-1.1's point D);
 - a slider's block is drawn at its body's own point (C5-1.5's block K sat halfway down its
   strand) and a strand ends at its end points (C5-1.1's strands ran past G1 and G2).
@@ -22,8 +23,8 @@ from kinematika.draw.build import build_scene
 from kinematika.draw.options import DrawOptions
 from kinematika.explain.document import Drawing
 
-from tests.draw.artists import arrow, axes, pixel
-from .helpers import LANGS, SEEDS, explained, rendered, over
+from tests.draw.artists import axes, pixel
+from .helpers import LANGS, SEEDS, explained, figures, over, rendered
 
 # what each language calls a relative and a drag velocity in a caption's list
 RELATIVE = {"en": "relative velocity", "es": "velocidad relativa", "ca": "velocitat relativa",
@@ -88,38 +89,6 @@ def test_the_prismatic_pair_caption_lists_three_arrows():
             assert w in caption, caption
 
 
-@over(name=SEEDS)
-def test_a_velocity_arrow_starts_at_its_point(name):
-    """Read off the drawn arrows: every velocity arrow's path starts at its point (the scene's
-    origin of the vector), never ends there — but where, starting there, it would cross the
-    ground's line into its material (the frame's lines, the lines welded to it: C5-E.3's v_B
-    down into the track, C5-1.2's v_J∈OJ over the left plane; twenty-seventh round (f)): it
-    then ends there, its tail clear of the ground."""
-    sol, _ = explained(name)
-    for k in range(len(_drawings(name))):
-        fig, scene = _drawn(name, k)
-        ground = [s.line() for b in scene.bodies.values() if b.frame or b.fixed for s in b.shapes if s.kind == "line"]
-        for v in scene.vectors:
-            if v.kind != "velocity" or v.magnitude <= 1e-9 * sol.inst.scale:
-                continue
-            start, tip = arrow(fig, v.key)
-            origin = np.asarray(v.origin)[:2]
-            assert np.linalg.norm(tip - start) > 10 * pixel(fig), v.key
-            if np.linalg.norm(tip - origin) <= 4 * pixel(fig):          # ends at its point (its head read 2–3 px short): the ground was in the way
-                assert any(_sides(origin, origin + (tip - start), line) < 0 for line in ground), (v.key, start, v.origin)
-                assert all(_sides(start, origin, line) > 0 for line in ground), v.key
-                continue
-            assert np.linalg.norm(start - origin) <= 2 * pixel(fig), (v.key, start, v.origin)
-
-
-def _sides(p: np.ndarray, q: np.ndarray, line: tuple) -> float:
-    """The product of the signed distances of p and q from the line (point, direction):
-    negative when pq crosses it."""
-    through, direction = (np.asarray(x, dtype=float) for x in line)
-    n = np.array([-direction[1], direction[0]])
-    return float((p - through) @ n) * float((q - through) @ n)
-
-
 def _mark_rows(md: str) -> list[list[str]]:
     """The annotation rows (first and third) of every vector equation's code block."""
     rows = []
@@ -174,19 +143,21 @@ def test_the_block_is_drawn_at_its_point():
 @over(name=SEEDS)
 def test_a_strand_ends_at_its_points(name):
     """A moving line body that guides nothing (a cable's strand) is drawn from its first point
-    or contact to its last, never past them (C5-1.1's strands ran past G1 and G2)."""
-    for k in range(min(1, len(_drawings(name)))):
-        fig, scene = _drawn(name, k)
+    or contact to its last, never past them (C5-1.1's strands ran past G1 and G2): read off the
+    first figure's line marks as the page drew them (`figures`), 2 px at most."""
+    sol, _ = explained(name)
+    for options, marks, _, transform in figures(name, "en")[:1]:
+        scene = build_scene(sol.inst, sol, DrawOptions(**options))
         for body in scene.bodies.values():
             if body.frame or not any(s.kind == "line" for s in body.shapes):
                 continue
             if any(j.a == body.name and (j.kind.slides or j.kind.guides_point) for j in scene.joints):
                 continue
-            ends = [ln.get_xydata() for ln in axes(fig).lines if ln.get_gid() == f"shape:{body.name}"]
+            ends = [np.asarray(m.points, float) for m in marks if m.kind == "line" and m.gid == f"shape:{body.name}"]
             if not ends or len(ends[0]) != 2:
                 continue                                           # a belt's loop
             places = list(body.points.values()) + [j.contact for j in scene.joints
                                                    if body.name in (j.a, j.b) and j.contact is not None]
             for end in ends[0]:
-                assert min(np.linalg.norm(end - np.asarray(p)[:2]) for p in places) <= 2 * pixel(fig), \
-                    (body.name, end)
+                gaps = [np.linalg.norm(transform.transform(end) - transform.transform(np.asarray(p, float)[:2])) for p in places]
+                assert min(gaps) <= 2, (body.name, end)
