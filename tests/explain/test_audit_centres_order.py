@@ -8,8 +8,12 @@ import re
 
 import pytest
 
-
 from .helpers import LANGS, SEEDS, rendered
+
+# tests/explain is one unit of work (its pages are drawn once in one worker, tests/conftest.py's
+# ONE_WORKER) and the longest of the run: handed out first among the long units, so that no
+# other file waits in its worker before it
+pytestmark = pytest.mark.early
 
 # the sentence that places a centre from one velocity, per language
 PERPENDICULAR = {"en": "on the perpendicular to", "es": "en la perpendicular a", "ca": "a la perpendicular a",
