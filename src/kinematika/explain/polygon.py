@@ -165,9 +165,9 @@ def short_arrows(fig: Figure, symbols: dict) -> list:
     drawn at: shorter than their arrowhead (`UNSEEN`), they show the head and no line (C5-E.4's a_U,
     1/32 of a_P, an arrowhead hidden at the pole; a_PU^t a stub at p). `symbols` names the
     arrows drawn without a label (the blue ones, lettered by their images) by their ends."""
-    from .render.svg import bounds, points_per_unit
+    from .render.svg import bounds, points_per_unit, shortest_term
 
-    k = points_per_unit(*bounds(fig))
+    k = points_per_unit(*bounds(fig), shortest_term(fig.arrows))
     out: list = []
     for a in fig.arrows:
         head = HEAD * WIDTHS.get(a.style, 1.8)
@@ -472,7 +472,7 @@ def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tupl
     label (issue 30, twenty-seventh round (a))."""
     pts = [p for a in arrows for p in (a.start, a.end)]
     size = max(*(abs(p[0]) for p in pts), *(abs(p[1]) for p in pts), 1e-300)
-    k = _drawn_scale(pts)
+    k = _drawn_scale(pts, arrows)
     placed: dict[int, Arrow] = {}
     joins: list[tuple[tuple, tuple]] = []
     order = sorted(range(len(arrows)), key=lambda i: arrows[i].style != "result")
@@ -504,14 +504,16 @@ def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tupl
 LABEL_BOX = (30.0, 16.0)    # points: a term's label (a_FB^t), width and height, as the figures set it
 
 
-def _drawn_scale(pts: list[tuple]) -> float:
+def _drawn_scale(pts: list[tuple], arrows: list) -> float:
     """Points per model unit at which a polygon through `pts` (its arrows' ends) and its pole
-    is drawn (`render.svg.points_per_unit`, the bounds 2 % larger as `render.svg.bounds`)."""
-    from .render.svg import points_per_unit
+    is drawn (`render.svg.points_per_unit`, the bounds 2 % larger as `render.svg.bounds`,
+    grown for its shortest labelled term as `render.svg.shortest_term`)."""
+    from .render.svg import points_per_unit, shortest_term
 
     xs, ys = [0.0] + [p[0] for p in pts], [0.0] + [p[1] for p in pts]
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-300)
-    return points_per_unit(min(xs) - 0.02 * span, min(ys) - 0.02 * span, max(xs) + 0.02 * span, max(ys) + 0.02 * span)
+    return points_per_unit(min(xs) - 0.02 * span, min(ys) - 0.02 * span, max(xs) + 0.02 * span, max(ys) + 0.02 * span,
+                           shortest_term(arrows))
 
 
 def _label_across(a: Arrow) -> float:
