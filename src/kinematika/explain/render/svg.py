@@ -25,7 +25,7 @@ COLOURS = {"known": "#222222", "unknown": "#c0392b", "result": "#1f5fa8", "veloc
            "construction": "#999999"}
 WIDTH, MAX_HEIGHT, MARGIN, BAR = 460, 420, 30, 26
 TALL = 680          # points: the height a figure grows to, at most, when a term would be drawn too short
-SHORT = 40.0        # points: a labelled term drawn shorter than this crowds its corner (a label's width)
+SHORT = 56.0        # points: a labelled term drawn shorter than this crowds its corner (two labels wide)
 LINE = {"result": 2.2, "known": 1.8}         # an arrow's line width (points) by style: a result's wider
 MARKER = 7.0                                  # an arrowhead's length and width, in its line's widths
 FONT, SMALL = 13.0, 0.7                      # label size (units = points), sub/superscript scale
