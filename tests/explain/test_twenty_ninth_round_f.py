@@ -17,6 +17,7 @@ import math
 
 import numpy as np
 
+from kinematika.explain.document import Arrow, Sym
 from kinematika.explain.render import svg
 from .helpers import NOTES_SEEDS, over, recorded_pages
 
@@ -75,15 +76,30 @@ def test_a_polygon_label_overlaps_no_label_shaft_or_head(name):
                     assert not _inside(spot.box, _head(p, q, width)), (lang, spot.text.markup, "head", arrow.label)
 
 
+def _term(length: float) -> Arrow:
+    """A labelled term `length` long, upwards."""
+    return Arrow((0.0, 0.0), (0.0, length), Sym("a", "X"))
+
+
 def test_a_polygon_with_a_short_term_is_drawn_larger():
-    """A polygon 1 × 10 units (a tall one) with a term 0.1 long: at 420 points high its
-    scale is (420 - 60) / 10 = 36 points a unit, the term 3.6 points; it is drawn at most
+    """A polygon 1 × 10 units (a tall one) with a term 0.25 long: at 420 points high its
+    scale is (420 - 60) / 10 = 36 points a unit, the term 9 points; it is drawn at most
     `TALL` high instead, (TALL - 60) / 10 points a unit (the width 460 - 60 = 400 points
-    allows 400). With no short term it keeps its 36."""
+    allows 400), and a term 1.0 long as far as it needs: SHORT points. With no short term
+    it keeps its 36; a wide polygon (10 × 1) keeps its 40, its width filling the page."""
     plain = svg.points_per_unit(0.0, 0.0, 1.0, 10.0)
     assert math.isclose(plain, (420 - 60) / 10)
-    grown = svg.points_per_unit(0.0, 0.0, 1.0, 10.0, shortest=0.1)
-    assert math.isclose(grown, (svg.TALL - 60) / 10) and svg.TALL > 420
-    assert math.isclose(svg.points_per_unit(0.0, 0.0, 1.0, 10.0, shortest=5.0), plain)
-    # a wide polygon cannot grow: its width already fills the page
-    assert math.isclose(svg.points_per_unit(0.0, 0.0, 10.0, 1.0, shortest=0.1), 40.0)
+    tallest = (svg.TALL - 60) / 10
+    assert svg.TALL > 420 and 0.25 * tallest >= svg.MARKER * 1.8        # a 0.25 term is seen at the tallest
+    assert math.isclose(svg.points_per_unit(0.0, 0.0, 1.0, 10.0, [_term(5.0), _term(0.25)]), tallest)
+    assert math.isclose(svg.points_per_unit(0.0, 0.0, 1.0, 10.0, [_term(1.0)]), svg.SHORT / 1.0)
+    assert math.isclose(svg.points_per_unit(0.0, 0.0, 1.0, 10.0, [_term(5.0)]), plain)
+    assert math.isclose(svg.points_per_unit(0.0, 0.0, 10.0, 1.0, [_term(0.25)]), 40.0)
+
+
+def test_a_term_too_short_to_see_does_not_grow_the_polygon():
+    """A term that even `TALL` high is shorter than its head (0.01 units: 0.62 points at
+    (TALL - 60) / 10 a unit) is named in the caption without its label
+    (`polygon.short_arrows`): the polygon is not grown for it, so its scale is the same with
+    its label or without (the caption's "too short to be seen" and the drawing agree)."""
+    assert math.isclose(svg.points_per_unit(0.0, 0.0, 1.0, 10.0, [_term(5.0), _term(0.01)]), (420 - 60) / 10)

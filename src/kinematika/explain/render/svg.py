@@ -14,7 +14,7 @@ import re
 import threading
 from dataclasses import dataclass, field
 from html import escape
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 
@@ -148,29 +148,24 @@ def layout(fig: Figure, label: Callable[[Sym | str], Text]) -> Layout:
     return fig.layouts[key]
 
 
-def points_per_unit(x0: float, y0: float, x1: float, y1: float, shortest: float = 0.0) -> float:
+def points_per_unit(x0: float, y0: float, x1: float, y1: float, arrows: Sequence = ()) -> float:
     """The scale a figure whose drawing spans the box (x0, y0)–(x1, y1) is drawn at, in points
     per model unit: as large as fits WIDTH × MAX_HEIGHT within the margins. A figure whose
-    shortest labelled term (`shortest`, model units; 0: none) would be drawn shorter than
-    `SHORT` grows, as far as it needs and WIDTH × `TALL` allows: its corner had no room for
-    the term's label beside the others' (001's rolling pair: a_AB^n, a_FB^n, o and a_Cor,A
-    piled at the pole; issue 30, twenty-ninth round (f)). A wide figure, which fills the
-    page's width already, does not grow."""
+    shortest labelled term (of `arrows`, model units) would be drawn shorter than `SHORT`
+    grows, as far as it needs and WIDTH × `TALL` allows: its corner had no room for the
+    term's label beside the others' (001's rolling pair: a_AB^n, a_FB^n, o and a_Cor,A piled
+    at the pole; issue 30, twenty-ninth round (f)). A wide figure, which fills the page's
+    width already, does not grow. A term shorter than its head even at the largest scale is
+    not grown for: it is named in the caption as too short to see, without its label
+    (`polygon.short_arrows`), and the scale is the same with its label or without."""
     w, h = max(x1 - x0, 1e-300), max(y1 - y0, 1e-300)
     k = min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
-    if shortest > 0 and shortest * k < SHORT:
-        k = max(k, min((WIDTH - 2 * MARGIN) / w, (TALL - 2 * MARGIN) / h, SHORT / shortest))
+    most = max(k, min((WIDTH - 2 * MARGIN) / w, (TALL - 2 * MARGIN) / h))
+    seen = [math.dist(a.start, a.end) for a in arrows if a.label is not None
+            and math.dist(a.start, a.end) * most >= MARKER * LINE.get(a.style, LINE["known"])]
+    if seen and min(seen) * k < SHORT:
+        k = min(most, SHORT / min(seen))
     return k
-
-
-def shortest_term(arrows: list) -> float:
-    """The length (model units) of a figure's shortest labelled arrow that is drawn at all
-    (longer than 10⁻⁹ of the longest); 0 when it labels none: what `points_per_unit` grows
-    a figure for."""
-    lengths = [math.dist(a.start, a.end) for a in arrows if a.label is not None]
-    longest = max([math.dist(a.start, a.end) for a in arrows], default=0.0)
-    drawn = [n for n in lengths if n > 1e-9 * longest]
-    return min(drawn, default=0.0)
 
 
 def outward(p: tuple, arrows: list, size: float) -> Optional[tuple]:
@@ -195,7 +190,7 @@ def outward(p: tuple, arrows: list, size: float) -> Optional[tuple]:
 def _layout(fig: Figure, texts: dict, names: list) -> Layout:
     x0, y0, x1, y1 = bounds(fig)
     h = max(y1 - y0, 1e-300)
-    k = points_per_unit(x0, y0, x1, y1, shortest_term(fig.arrows))
+    k = points_per_unit(x0, y0, x1, y1, fig.arrows)
     out = Layout(fig, k, x0, y1, h * k + 2 * MARGIN + BAR)
     items: list[tuple[Text, str, tuple, int, Optional[tuple], Optional[tuple]]] = \
         [(text, COLOURS["known"], p, 0 if style == "pole" else 1, outward(p, fig.arrows, max(x1 - x0, h)), None)
