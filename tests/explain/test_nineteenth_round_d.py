@@ -169,20 +169,24 @@ def test_the_rolling_pairs_leaders_cross_no_arrow(lang):
             if crossed and along is not None:
                 own = (lay.at(along[0]), lay.at(along[1]))
                 boxes = [other.box for other in placed if other is not spot]
-                free = _free_place(own, arrows, boxes, spot.box, lay.height)
+                heads = [svg_module.arrowhead(lay.at(a.start), lay.at(a.end), svg_module.LINE.get(a.style, 1.8))
+                         for a in lay.fig.arrows]
+                free = _free_place(own, arrows, boxes, spot.box, lay.height, heads)
                 assert free is None, (spot.text.markup, crossed, "free at", free)
             else:
                 assert not crossed, (spot.text.markup, crossed)
 
 
-def _free_place(own, arrows, boxes, box, height, reach=90.0, step=2.0):
+def _free_place(own, arrows, boxes, box, height, heads=(), reach=90.0, step=2.0):
     """A centre (figure units) for a label of `box`'s size near the middle of its arrow `own`
     where it reads as that arrow's and its leader crosses no other arrow, or None: inside the
     figure above the scale bar's row, over no other label (`boxes`) and no arrow, and either
     beside its arrow (within 16 pt) with no other arrow within 4 pt as near as its own, or
     set off with a straight leader from the arrow's middle that crosses no other arrow and
     no other arrow within 4 pt of the box. Each arrow is measured without 8 pt at its ends
-    (at most a quarter), where a label is read beside the arrow it lies along."""
+    (at most a quarter), where a label is read beside the arrow it lies along. A place over
+    an arrowhead (`heads`: each head's outline, tip first) is not free (twenty-ninth round
+    (f): no label covers a head)."""
     w, h = box[2] - box[0], box[3] - box[1]
     mid = ((own[0][0] + own[1][0]) / 2, (own[0][1] + own[1][1]) / 2)
     others = [ab for ab in arrows if not (math.dist(ab[0], own[0]) < 0.5 and math.dist(ab[1], own[1]) < 0.5)]
@@ -207,6 +211,8 @@ def _free_place(own, arrows, boxes, box, height, reach=90.0, step=2.0):
             if any(min(b[2], o[2]) > max(b[0], o[0]) and min(b[3], o[3]) > max(b[1], o[1]) for o in boxes):
                 continue
             if any(to_box(*ab, b) == 0.0 for ab in arrows):
+                continue
+            if any(min(to_box(t, c, b), to_box(t, d, b), to_box(c, d, b)) == 0.0 for t, c, d in (hd for hd in heads if hd)):
                 continue
             mine = to_box(*part(*own), b)
             nearest = min((to_box(*part(*ab), b) for ab in others), default=math.inf)

@@ -155,8 +155,6 @@ def polygon(ctx: Ctx, eq: Equation) -> Figure | None:
     return fig
 
 
-HEAD = 7.0              # an arrowhead's length, in its line's widths (`render.svg`'s marker)
-WIDTHS = {"result": 2.2}   # an arrow's line width (points) by style; 1.8 else (`render.svg.svg`)
 UNSEEN = 1.0            # an arrow shorter than its head (times this) shows the head alone
 
 
@@ -165,12 +163,12 @@ def short_arrows(fig: Figure, symbols: dict) -> list:
     drawn at: shorter than their arrowhead (`UNSEEN`), they show the head and no line (C5-E.4's a_U,
     1/32 of a_P, an arrowhead hidden at the pole; a_PU^t a stub at p). `symbols` names the
     arrows drawn without a label (the blue ones, lettered by their images) by their ends."""
-    from .render.svg import bounds, points_per_unit
+    from .render.svg import LINE, MARKER, bounds, points_per_unit
 
-    k = points_per_unit(*bounds(fig))
+    k = points_per_unit(*bounds(fig), fig.arrows)
     out: list = []
     for a in fig.arrows:
-        head = HEAD * WIDTHS.get(a.style, 1.8)
+        head = MARKER * LINE.get(a.style, LINE["known"])        # the head's length, as `render.svg` draws it
         sym = a.label if a.label is not None else symbols.get((a.start, a.end))
         if sym is not None and sym not in out and math.dist(a.start, a.end) * k < UNSEEN * head:
             out.append(sym)
@@ -472,7 +470,7 @@ def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tupl
     label (issue 30, twenty-seventh round (a))."""
     pts = [p for a in arrows for p in (a.start, a.end)]
     size = max(*(abs(p[0]) for p in pts), *(abs(p[1]) for p in pts), 1e-300)
-    k = _drawn_scale(pts)
+    k = _drawn_scale(pts, arrows)
     placed: dict[int, Arrow] = {}
     joins: list[tuple[tuple, tuple]] = []
     order = sorted(range(len(arrows)), key=lambda i: arrows[i].style != "result")
@@ -504,14 +502,16 @@ def _separated(arrows: list[Arrow]) -> tuple[list[Arrow], list[tuple[tuple, tupl
 LABEL_BOX = (30.0, 16.0)    # points: a term's label (a_FB^t), width and height, as the figures set it
 
 
-def _drawn_scale(pts: list[tuple]) -> float:
+def _drawn_scale(pts: list[tuple], arrows: list) -> float:
     """Points per model unit at which a polygon through `pts` (its arrows' ends) and its pole
-    is drawn (`render.svg.points_per_unit`, the bounds 2 % larger as `render.svg.bounds`)."""
+    is drawn (`render.svg.points_per_unit`, the bounds 2 % larger as `render.svg.bounds`,
+    grown for its shortest labelled term among `arrows`)."""
     from .render.svg import points_per_unit
 
     xs, ys = [0.0] + [p[0] for p in pts], [0.0] + [p[1] for p in pts]
     span = max(max(xs) - min(xs), max(ys) - min(ys), 1e-300)
-    return points_per_unit(min(xs) - 0.02 * span, min(ys) - 0.02 * span, max(xs) + 0.02 * span, max(ys) + 0.02 * span)
+    return points_per_unit(min(xs) - 0.02 * span, min(ys) - 0.02 * span, max(xs) + 0.02 * span, max(ys) + 0.02 * span,
+                           arrows)
 
 
 def _label_across(a: Arrow) -> float:

@@ -14,7 +14,7 @@ import re
 import threading
 from dataclasses import dataclass, field
 from html import escape
-from typing import Any, Callable, Optional
+from typing import Any, Callable, Optional, Sequence
 
 import numpy as np
 
@@ -24,6 +24,10 @@ from ..document import Figure, Sym
 COLOURS = {"known": "#222222", "unknown": "#c0392b", "result": "#1f5fa8", "velocity": "#2e8b57",
            "construction": "#999999"}
 WIDTH, MAX_HEIGHT, MARGIN, BAR = 460, 420, 30, 26
+TALL = 680          # points: the height a figure grows to, at most, when a term would be drawn too short
+SHORT = 56.0        # points: a labelled term drawn shorter than this crowds its corner (two labels wide)
+LINE = {"result": 2.2, "known": 1.8}         # an arrow's line width (points) by style: a result's wider
+MARKER = 7.0                                  # an arrowhead's length and width, in its line's widths
 FONT, SMALL = 13.0, 0.7                      # label size (units = points), sub/superscript scale
 
 
@@ -144,20 +148,52 @@ def layout(fig: Figure, label: Callable[[Sym | str], Text]) -> Layout:
     return fig.layouts[key]
 
 
-def points_per_unit(x0: float, y0: float, x1: float, y1: float) -> float:
+def points_per_unit(x0: float, y0: float, x1: float, y1: float, arrows: Sequence = ()) -> float:
     """The scale a figure whose drawing spans the box (x0, y0)–(x1, y1) is drawn at, in points
-    per model unit: as large as fits WIDTH × MAX_HEIGHT within the margins."""
+    per model unit: as large as fits WIDTH × MAX_HEIGHT within the margins. A figure whose
+    shortest labelled term (of `arrows`, model units) would be drawn shorter than `SHORT`
+    grows, as far as it needs and WIDTH × `TALL` allows: its corner had no room for the
+    term's label beside the others' (001's rolling pair: a_AB^n, a_FB^n, o and a_Cor,A piled
+    at the pole; issue 30, twenty-ninth round (f)). A wide figure, which fills the page's
+    width already, does not grow. A term shorter than its head even at the largest scale is
+    not grown for: it is named in the caption as too short to see, without its label
+    (`polygon.short_arrows`), and the scale is the same with its label or without."""
     w, h = max(x1 - x0, 1e-300), max(y1 - y0, 1e-300)
-    return min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
+    k = min((WIDTH - 2 * MARGIN) / w, (MAX_HEIGHT - 2 * MARGIN) / h)
+    most = max(k, min((WIDTH - 2 * MARGIN) / w, (TALL - 2 * MARGIN) / h))
+    seen = [math.dist(a.start, a.end) for a in arrows if a.label is not None
+            and math.dist(a.start, a.end) * most >= MARKER * LINE.get(a.style, LINE["known"])]
+    if seen and min(seen) * k < SHORT:
+        k = min(most, SHORT / min(seen))
+    return k
+
+
+def outward(p: tuple, arrows: list, size: float) -> Optional[tuple]:
+    """The direction a point's name (the pole's, an image's) is drawn towards: away from the
+    arrows that meet at `p` (the negated sum of their directions from it), out of the
+    polygon's corner, where no arrow's shaft or head is; None where none meets it or they
+    cancel. "o" was set between the pole's arrows, by a_C^t's head and text (C5-1.7), or on
+    "a, b, c" (C5-E.5; issue 30, twenty-ninth round (f)). `size` (model units) sets how near
+    an end must lie to meet it (10⁻⁶ of it)."""
+    sx = sy = 0.0
+    for a in arrows:
+        for here, there in ((a.start, a.end), (a.end, a.start)):
+            n = math.dist(here, there)
+            if n > 0 and math.dist(here, p) <= 1e-6 * size:
+                sx += (there[0] - here[0]) / n
+                sy += (there[1] - here[1]) / n
+    if math.hypot(sx, sy) < 1e-6:
+        return None
+    return -sx, -sy
 
 
 def _layout(fig: Figure, texts: dict, names: list) -> Layout:
     x0, y0, x1, y1 = bounds(fig)
     h = max(y1 - y0, 1e-300)
-    k = points_per_unit(x0, y0, x1, y1)
+    k = points_per_unit(x0, y0, x1, y1, fig.arrows)
     out = Layout(fig, k, x0, y1, h * k + 2 * MARGIN + BAR)
     items: list[tuple[Text, str, tuple, int, Optional[tuple], Optional[tuple]]] = \
-        [(text, COLOURS["known"], p, 0 if style == "pole" else 1, None, None)
+        [(text, COLOURS["known"], p, 0 if style == "pole" else 1, outward(p, fig.arrows, max(x1 - x0, h)), None)
          for text, (_, p, style) in zip(names, fig.points)]
     for a in fig.arrows:
         if a.label is not None:             # beside its middle, or slid along it (`draw.labels.SLIDE`)
@@ -189,6 +225,9 @@ def _place(lay: Layout, items: list) -> list[Placed]:
                                   width=text.width, height=text.height, off_arrows=along is None))
     for a in fig.arrows:
         board.arrow(data(a.start), data(a.end))
+        head = arrowhead(data(a.start), data(a.end), LINE.get(a.style, LINE["known"]))
+        if head:
+            board.avoid(*head, head[0], weight=3.0)
     for p, q in fig.segments:
         board.avoid(data(p), data(q), weight=1.0)
     for p, q in fig.lines:
@@ -220,6 +259,22 @@ def _place(lay: Layout, items: list) -> list[Placed]:
             leader = (start, _edge(start, box))
         out.append(Placed(text, colour, centre, box, leader))
     return out
+
+
+def arrowhead(start: tuple, end: tuple, width: float) -> list[tuple]:
+    """The outline of the head `svg` draws at an arrow's `end` (figure or data units, one
+    unit a point): its marker, `MARKER` line widths long and as wide, tip first; [] for an
+    arrow of no length. Labels keep off it as off the shaft: the tip's round of
+    `draw.labels.TIP` points left the back of a 13-point head bare, and C5-1.7's "o", r_pairs'
+    a_BA^t sat on heads (issue 30, twenty-ninth round (f))."""
+    (ax, ay), (bx, by) = start, end
+    n = math.hypot(bx - ax, by - ay)
+    if n == 0:
+        return []
+    ux, uy = (bx - ax) / n, (by - ay) / n
+    back, half = MARKER * width, MARKER * width / 2
+    cx, cy = bx - back * ux, by - back * uy
+    return [(bx, by), (cx - half * uy, cy + half * ux), (cx + half * uy, cy - half * ux)]
 
 
 def _nearer_another(box: tuple, anchor: tuple, along: Optional[tuple], lay: Layout, arrows: list,
@@ -308,8 +363,8 @@ def svg(fig: Figure, label: Callable[[Sym | str], Text], unit: str, prefix: str 
     out = [f'<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH}" height="{height:.0f}" '
            f'viewBox="0 0 {WIDTH} {height:.0f}" font-family="DejaVu Sans, Arial, sans-serif" font-size="{FONT:g}">',
            "<defs>" + "".join(
-               f'<marker id="{prefix}-{name}" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" '
-               f'markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="{c}"/></marker>'
+               f'<marker id="{prefix}-{name}" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="{MARKER:g}" '
+               f'markerHeight="{MARKER:g}" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="{c}"/></marker>'
                for name, c in COLOURS.items()) + "</defs>"]
     at = lay.at
     for c, r in fig.circles:
@@ -327,7 +382,7 @@ def svg(fig: Figure, label: Callable[[Sym | str], Text], unit: str, prefix: str 
     for arrow in fig.arrows:
         (ax, ay), (bx, by) = at(arrow.start), at(arrow.end)
         colour = COLOURS[arrow.style]
-        width = 2.2 if arrow.style == "result" else 1.8
+        width = LINE.get(arrow.style, LINE["known"])
         out.append(f'<line x1="{ax:.1f}" y1="{ay:.1f}" x2="{bx:.1f}" y2="{by:.1f}" stroke="{colour}" '
                    f'stroke-width="{width}" marker-end="url(#{prefix}-{arrow.style})"/>')
     for _, p, style in fig.points:
