@@ -384,6 +384,10 @@ pos-right = el que queda a la dreta mirant { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } cap a { $b }
+pos-upper = el de dalt
+pos-lower = el de baix
+pos-leftmost = el de l’esquerra
+pos-rightmost = el de la dreta
 pos-ahead = el que és més endavant en el sentit de la recta { $line }
 pos-behind = el que és més enrere en el sentit de la recta { $line }
 pos-near = el més proper al punt de l’esbós { $near }

@@ -291,6 +291,10 @@ pos-lines = { $point } is where the lines { $l1 } and { $l2 } meet: { $point } =
 pos-line_dir = through { $through } along { $dir }
 pos-left = the one on the left as one looks from { $a } towards { $b }
 pos-right = the one on the right as one looks from { $a } towards { $b }
+pos-upper = the upper one
+pos-lower = the lower one
+pos-leftmost = the one on the left
+pos-rightmost = the one on the right
 pos-ahead = the one farther along the line { $line }
 pos-behind = the one farther back along the line { $line }
 pos-near = the one nearer the sketch point { $near }
