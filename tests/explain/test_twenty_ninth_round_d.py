@@ -167,7 +167,7 @@ def test_d3_each_pulley_in_a_cable_draws_its_wrapped_arc(name: str, lang: str) -
                 and j.kind.name == "rolling"]
         for end in (arc[0], arc[-1]):
             assert any(np.allclose(end, e, atol=1e-9 * r) for e in ends), (body.name, end)
-        for end, nxt in ((arc[0], arc[1]), (arc[-1], arc[-2])):
+        for end in (arc[0], arc[-1]):
             # the strand through this end: its direction is perpendicular to the radius there
             j = next(j for j in scene.joints if j.contact is not None and np.allclose(j.contact, end, atol=1e-9 * r)
                      and body.name in (j.a, j.b))

@@ -213,9 +213,9 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
         wrap = cable_wrap(ctx.scene, body, s)
         if wrap is not None:
             arc, colour = wrap
+            # on the rim, which labels already keep off (the disc's `avoid` above)
             ctx.add("line", arc, width=WRAP_WIDTH, colour=colour, zorder=3.5, cap="round",
                     gid=f"wrap:{name}", moves_with=name)
-            ctx.avoid(*arc[::6])
     elif s.kind == "line":
         loop = belt_loop(ctx, body, s)
         if loop is not None:

@@ -67,8 +67,9 @@ def kind_key(j: Any, frame: str) -> str:
     return "slot_fixed" if on_fixed_line(j, frame) else j.kind.name
 
 
-# the letter a lower pair's kind is written with in the notes (the R of "RRR", the P of "RRP")
-PAIR_LETTER = {"revolute": "R", "prismatic": "P"}
+# the letter a lower pair's kind is written with in the notes (the R of "RRR", the P of "RRP"),
+# and the key of its name without it
+PAIR_LETTER = {"revolute": ("R", "joint.revolute_word"), "prismatic": ("P", "joint.prismatic_word")}
 
 
 def joint_kind(ctx: Any, j: Any) -> Any:
@@ -80,9 +81,9 @@ def joint_kind(ctx: Any, j: Any) -> Any:
     from .document import msg
 
     key = kind_key(j, ctx.frame)
-    letter = PAIR_LETTER.get(key)
+    letter, word = PAIR_LETTER.get(key, (None, None))
     if letter is not None and letter in _symbols(ctx):
-        return msg(f"joint.{key}_word")
+        return msg(word)
     return msg(f"joint.{key}")
 
 
