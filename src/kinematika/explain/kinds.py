@@ -81,9 +81,9 @@ def joint_kind(ctx: Any, j: Any) -> Any:
     from .document import msg
 
     key = kind_key(j, ctx.frame)
-    letter, word = PAIR_LETTER.get(key, (None, None))
-    if letter is not None and letter in _symbols(ctx):
-        return msg(word)
+    pair = PAIR_LETTER.get(key)
+    if pair is not None and pair[0] in _symbols(ctx):
+        return msg(pair[1])
     return msg(f"joint.{key}")
 
 
