@@ -50,13 +50,16 @@ def test_seed_c5_e4_upper_wheel():
     # chassis to the left at v: the lower wheels roll about their contacts, w1 = v/R ccw. Seen
     # from the chassis (a translation), wheel 1 turns at v/R and the upper wheel, touching it
     # without slip, at −v/R (equal radii, external contact): the same relative to the ground.
+    # The lower centres are 2√2·R apart (issue 30, round 29 (d): 2R made the lower wheels touch
+    # and rub at (0, R)); U is 2R from each, so √((2R)² − (√2·R)²) = √2·R above them.
+    assert sympy.simplify(2 * sqrt(2) * R - 2 * R) != 0       # the lower wheels do not touch
     w1, w_up = v / R, -v / R
-    _, vp, ap = wheel_point([0, R + sqrt(3) * R], 1 / R, [0, R], -v, -vd)     # rate −v/R
+    _, vp, ap = wheel_point([0, R + sqrt(2) * R], 1 / R, [0, R], -v, -vd)     # rate −v/R
     assert vp == [0, 0] and ap == [0, -v ** 2 / R]            # the notes: P is the centre, a = v²/R ↓
     assert same(name, answer(name, omega="wheel1"), w1)
-    assert same(name, answer(name, icr="wheel1")["point"], [-R, 0])
+    assert same(name, answer(name, icr="wheel1")["point"], [-sqrt(2) * R, 0])
     assert same(name, answer(name, omega="upper"), w_up)
-    assert same(name, answer(name, icr="upper")["point"], [0, 2 * R + sqrt(3) * R])
+    assert same(name, answer(name, icr="upper")["point"], [0, 2 * R + sqrt(2) * R])
     assert same(name, answer(name, velocity="P"), vp)
     assert same(name, answer(name, acceleration="P"), ap)
 
@@ -74,10 +77,10 @@ def test_vehicle_upper_wheel_with_numbers():
     det = w_up ** 4 + al_up ** 2
     rx = (w_up ** 2 * acc) / det
     ry = (al_up * acc) / det
-    u = (0.0, R + 3 ** 0.5 * R)
+    u = (0.0, R + 2 ** 0.5 * R)           # 2R from A1 = (−√2·R, R): √(4R² − 2R²) above
     assert is_close(answer(name, pole="upper")["point"], [u[0] + rx, u[1] + ry], scale=1)
     # contact wheel 1 / upper wheel: at the midpoint of A1 U, both wheels' points move alike
-    a1 = (-R, R)
+    a1 = (-(2 ** 0.5) * R, R)
     c = ((a1[0] + u[0]) / 2, (a1[1] + u[1]) / 2)
     contact = answer(name, contact="w1_upper")
     assert is_close(contact["point"], c, scale=1)

@@ -68,8 +68,8 @@ def test_what_a_step_found_is_referred_to_by_its_number(name, lang):
 # by hand: which step finds each rate a centre is placed from, and the rest of rule 2
 # (C5-E.5: wheel 1 is asked first, so its step comes before wheel 2's: the sixteenth round (b))
 BY_NUMBER = [("seed_c5_1_6_belt", {"en": "found in Step 2 through the *belt*", "es": "hallada en el paso 2 a través de la *correa*"}),
-             ("seed_c5_e5_unequal_wheels", {"en": "found in Step 3 through the *wheel R*",     # the notes' roda R
-                                            "es": "hallada en el paso 3 a través de la *rueda R*"}),
+             ("seed_c5_e5_unequal_wheels", {"en": "found in Step 3 through the *rear wheel*",
+                                            "es": "hallada en el paso 3 a través de la *rueda trasera*"}),
              ("seed_c5_e6_bicycle", {"en": "found in Step 4 through the *chain*", "es": "hallada en el paso 4 a través de la *cadena*"}),
              ("seed_c5_2_1_tricycle", {"en": "the wheel C1 (rear left) found in Step 1",
                                        "es": "rueda C1 (trasera izquierda) hallada en el paso 1"}),

@@ -56,11 +56,12 @@ def test_every_contact_has_its_letter_in_table_and_figure(name, lang):
 
 
 def test_by_hand_the_upper_wheel_names_its_fourth_contact():
-    """C5-E.4 by hand: the right wheel touches the upper wheel at (R/2; R·(√3 + 2)/2) — the
-    two wheels' centres (R; R) and (0; R·(1 + √3)) are 2R apart, the contact halfway. That
-    place is the contact Q (J, K, N, Q: M is the equations' mark), named in the tables."""
+    """C5-E.4 by hand: the right wheel touches the upper wheel at (√2·R/2; R·(√2 + 2)/2) — the
+    two wheels' centres (√2·R; R) and (0; R·(1 + √2)) are 2R apart (twenty-ninth round (d):
+    the lower centres 2√2·R apart), the contact halfway. That place is the contact Q (J, K,
+    N, Q: M is the equations' mark), named in the tables."""
     page = rendered("seed_c5_e4_upper_wheel", "ca")
-    assert "| Q |" in _section(page, 1) and "(R/2; R·(√3 + 2)/2)" in _section(page, 1)
+    assert "| Q |" in _section(page, 1) and "(√2·R/2; R·(√2 + 2)/2)" in _section(page, 1)
     assert "| *roda dreta* – *roda superior* | Q |" in _section(page, 2)
 
 

@@ -95,7 +95,8 @@ def _names_block(name: str, lang: str) -> str:
 
 @over(name=SEEDS, lang=LANGS)
 def test_bodies_named_by_the_model(name: str, lang: str) -> None:
-    page = rendered(name, lang).lower()
+    # a circles' intersection "is the upper one" (twenty-ninth round (d)): a point, no body
+    page = re.sub(r"it is the (upper|lower) one:", "", rendered(name, lang).lower())
     own = _names_block(name, lang).lower()
     for words in POSITION[lang]:
         assert words not in page or words in own, (name, lang, words)

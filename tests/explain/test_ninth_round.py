@@ -149,10 +149,10 @@ def test_belt_fixed_pulley_absolute_on_the_left(lang, absolute, relative, drag):
     assert f"0 = {relative}" not in text
 
 
-@pytest.mark.parametrize("lang,label", [("ca", "rodaR"), ("es", "ruedaR"), ("en", "wheelR")])
+@pytest.mark.parametrize("lang,label", [("ca", "roda3"), ("es", "rueda3"), ("en", "wheel3")])
 def test_body_subscript_is_not_a_parameter(lang, label):
-    """C5-E.5: the wheel of radius R is ω_rodaR (the notes' Ω^{rodaR}), never ω_R beside
-    R; by hand its rate is −v/R (its centre at v, its contact at rest, radius R)."""
+    """C5-E.5: the wheel of radius R is never ω_R beside R (since the twenty-ninth round (d)
+    the *rear wheel*, ω_roda3 beside *roda 1* and *roda 2*, no longer ω_rodaR); by hand its rate is −v/R (its centre at v, its contact at rest, radius R)."""
     text = rendered("seed_c5_e5_unequal_wheels", lang, "md", drawings=False)
     assert not re.search(r"ω_R\b|ω_\{R ", text)
     assert f"ω_{label} = " in text and "−v/R" in text

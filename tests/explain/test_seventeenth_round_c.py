@@ -30,10 +30,10 @@ def test_a_captions_lettering_example_is_a_point_of_the_page(name, lang):
 
 
 def test_the_readers_pages_by_hand():
-    """C5-E.4 has A1 and A2 but no A: a bare letter of its own ("(p for P)"); C5-1.1's polygon
-    draws c, not a."""
+    """C5-E.4 has A1 and A2 but no A: a bare letter of its own ("(b for B)", the T's foot since
+    the twenty-ninth round (d)); C5-1.1's polygon draws c, not a."""
     e4 = rendered("seed_c5_e4_upper_wheel", "en", drawings=False)
-    assert "(a for A)" not in e4 and "(p for P)" in e4
+    assert "(a for A)" not in e4 and "(b for B)" in e4
     c51 = rendered("seed_c5_1_1_pulley_on_cable", "ca", drawings=False)
     assert "(a per a A)" not in c51 and "(c per a C)" in c51
 

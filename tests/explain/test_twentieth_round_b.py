@@ -125,11 +125,11 @@ def test_catalan_contact_point_before_its_name():
 
 # ---- 6.–8. the example's own words -------------------------------------------------------------
 
-# (twenty-seventh round (e): the wheel is the notes' "roda R")
-RADIUS = {"en": "radius of the rear wheel (wheel R)",
-          "es": "radio de la rueda trasera (la rueda R)",
-          "ca": "radi de la roda del darrere (la roda R)",
-          "eu": "atzeko gurpilaren erradioa (R gurpila)"}
+# (twenty-ninth round (d): the wheel is the rear wheel, no longer "wheel R": R is its radius)
+RADIUS = {"en": "| radius of the rear wheel |",
+          "es": "| radio de la rueda trasera |",
+          "ca": "| radi de la roda del darrere |",
+          "eu": "| atzeko gurpilaren erradioa |"}
 
 
 @pytest.mark.parametrize("lang", LANGS)

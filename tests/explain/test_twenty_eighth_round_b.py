@@ -145,9 +145,11 @@ def test_the_bar_measures_the_symbolic_polygon():
 
 
 def test_a_symbolic_tex_bar_has_its_unit():
-    """LaTeX draws the same bars: a number and its unit, m/s under C5-E.4's velocity polygon,
-    m/s² under its acceleration polygon (m under the mechanism drawn in TikZ)."""
-    tex = rendered("seed_c5_e4_upper_wheel", "en", "tex")
+    """LaTeX draws the same bars: a number and its unit, m/s under C5-E.5's velocity polygon,
+    m/s² under its acceleration polygon (m under the mechanism drawn in TikZ). (C5-E.4's, read
+    until the twenty-ninth round (d), lost its velocity polygon: a line of two arrows with four
+    images at u, `polygon.degenerate`.)"""
+    tex = rendered("seed_c5_e5_unequal_wheels", "en", "tex")
     bars = re.findall(r"\\draw\[\|-\|\][^\n]*node\[right\] \{(.*)\};", tex)
     assert any(b.endswith(" m/s") for b in bars) and any(b.endswith(" m/s$^2$") for b in bars), bars
     assert all(re.fullmatch(r"[0-9]+(?:\.[0-9]+)? m(?:/s(?:\$\^2\$)?)?", b) for b in bars), bars

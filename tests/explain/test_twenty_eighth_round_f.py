@@ -153,16 +153,9 @@ def test_an_arrow_too_short_to_see_is_named_in_the_caption(name, lang):
 
 
 def test_the_upper_wheel_names_a_u_and_a_pu_t():
-    """C5-E.4, drawn at R = 0.25, v = 2, v̇ = 0.5: a_U = (−v̇, 0) is 0.5 long and
-    a_PU^t = α × UP is v̇ = 0.5 too (α = −v̇/R, UP = R), beside a_P = v²/R = 16. At the usual
-    420 points they were shorter than their heads and the caption named both; since the
-    twenty-ninth round (f) the polygon grows for its short term: (TALL − 60) points over its
-    height, 16 and a little, puts 0.5 at about 18 points, longer than either head (7 × 2.2 =
-    15.4 points), so both are seen and the caption names neither."""
-    from kinematika.explain.render import svg
-
-    fig, caption = next((f, c) for f, c in _figure_captions("seed_c5_e4_upper_wheel", "en")
-                        if f.caption.key.startswith("fig.level_a"))
-    k = next(iter(fig.layouts.values())).k
-    assert 0.5 * k >= svg.MARKER * 2.2 and k <= (svg.TALL - 60) / 16, k
-    assert "too short to be seen" not in caption, caption
+    """C5-E.4, drawn since the twenty-ninth round (d) at R = 0.25, v = 2, v̇ = 8 (it was 0.5, and
+    the caption named a_U and a_PU^t too short to be seen): a_U = (−v̇, 0) is 8 long and
+    a_PU^t = α × UP is v̇ = 8 too (α = −v̇/R, UP = R), beside a_PU^n = v²/R = 16; every term
+    shows, and the caption names none."""
+    caption = next(c for f, c in _figure_captions("seed_c5_e4_upper_wheel", "en") if f.caption.key.startswith("fig.level_a"))
+    assert "too short" not in caption and "v̇ = 8" in caption, caption

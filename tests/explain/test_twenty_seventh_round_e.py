@@ -207,9 +207,9 @@ def test_the_readers_wordings() -> None:
     for lang, text in relative.items():
         assert text in plain_page("seed_001_p_pair_coriolis", lang), lang
     assert "els centres de les rodes són a 4R l’un de l’altre" in plain_page("seed_c5_e3_wheels_with_rod", "ca")
-    assert "són a 2R l’un de l’altre" in plain_page("seed_c5_e4_upper_wheel", "ca")
+    assert "són a 2√2 R l’un de l’altre" in plain_page("seed_c5_e4_upper_wheel", "ca")   # round 29 (d)
     assert "elkarrengandik 4R-ra" in plain_page("seed_c5_e3_wheels_with_rod", "eu")
-    assert "elkarrengandik 2R-ra" in plain_page("seed_c5_e4_upper_wheel", "eu")
+    assert "elkarrengandik 2√2 R-ra" in plain_page("seed_c5_e4_upper_wheel", "eu")
     assert "(es comprova més avall)" in plain_page("seed_c5_2_1_tricycle", "ca")
     for lang, text in {"en": "radius 1 m", "es": "radio 1 m", "ca": "radi 1 m", "eu": "1 m-ko erradioko"}.items():
         assert text in plain_page("seed_c5_1_3_bar_in_sleeve", lang), lang
@@ -257,7 +257,10 @@ def test_the_cavitys_wheels_and_arm_by_hand() -> None:
     for lang, texts in said.items():
         page = plain_page("seed_c5_e1_cavity", lang)
         assert all(t in page for t in texts), lang
-    for lang, name in {"en": "*wheel R*", "es": "*rueda R*", "ca": "*roda R*", "eu": "*R gurpila*"}.items():
+    # twenty-ninth round (d): the wheel of radius R is the *rear wheel* (R was a radius, a
+    # wheel's name and the hinges' letter on one page)
+    for lang, name in {"en": "*rear wheel*", "es": "*rueda trasera*", "ca": "*roda del darrere*",
+                       "eu": "*atzeko gurpila*"}.items():
         page = plain_page("seed_c5_e5_unequal_wheels", lang)
         assert name in page and "of radius R*" not in page and "de radio R*" not in page and "de radi R*" not in page
 

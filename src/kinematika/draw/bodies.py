@@ -210,6 +210,12 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
                     width=1.0, colour=body.colour, alpha=0.4 if s.apart else 0.8, zorder=3, moves_with=name)
         ctx.avoid(*_ring(centre, s.radius))
         ctx.area(*_ring(centre, s.radius))
+        wrap = cable_wrap(ctx.scene, body, s)
+        if wrap is not None:
+            arc, colour = wrap
+            # on the rim, which labels already keep off (the disc's `avoid` above)
+            ctx.add("line", arc, width=WRAP_WIDTH, colour=colour, zorder=3.5, cap="round",
+                    gid=f"wrap:{name}", moves_with=name)
     elif s.kind == "line":
         loop = belt_loop(ctx, body, s)
         if loop is not None:
@@ -243,6 +249,79 @@ def _moving_curve(ctx: Context, body: BodyView, s: ShapeView, gid: str) -> None:
         ctx.area(*vertices)
     ctx.add("line", vertices, width=2.2, colour=body.colour, zorder=3, gid=gid, moves_with=body.name)
     ctx.avoid(*vertices[::8])
+
+
+WRAP_WIDTH = 2.2     # the cable's arc wrapped round a pulley: as thin as its strands, over the rim (2.2)
+
+
+def strand(scene: Any, body: Optional[BodyView]) -> bool:
+    """Whether a body is a strand of cable: a straight body (a line, no circle), moving, or
+    fixed and tied as a cable (`cable_strand`)."""
+    if body is None or not any(sh.kind == "line" for sh in body.shapes) \
+            or any(sh.kind == "circle" for sh in body.shapes):
+        return False
+    return not (body.frame or body.fixed) or cable_strand(scene, body)
+
+
+def cable_wrap(scene: Any, body: BodyView, s: ShapeView) -> Optional[tuple[np.ndarray, str]]:
+    """The arc of cable wrapped round a pulley, and its colour; None where the wheel is no
+    pulley. A pulley hangs in (or turns under) one cable: two strands roll on its circle, each
+    tangent to it at its contact T and running away from it to its other points and contacts
+    (unit direction d). The cable comes in along the first strand (travelling −d₁ at T₁),
+    follows the circle in that sense and leaves along the second (travelling +d₂ at T₂): the
+    arc from T₁ to T₂ in the sense of (T₁ − C) × (−d₁). A wheel between two straight bodies
+    that the cable's path does not join so (a roller between plates) is no pulley. Drawn with
+    strands that stop at their tangent points (`_line_span`), a pulley read as floating beside
+    its cable (C5-1.1, C5-1.5; issue 30, twenty-ninth round (d)); a belt, one body round two
+    pulleys, draws its own wrap (`belt_loop`)."""
+    centre, tol = s.centre(), 1e-6 * max(s.radius, 1e-300)
+    ends = []
+    for j in scene.joints:
+        if j.contact is None or body.name not in (j.a, j.b) or j.kind.name != "rolling":
+            continue
+        other = scene.bodies.get(j.b if j.a == body.name else j.a)
+        if not strand(scene, other):
+            continue
+        t = np.asarray(j.contact, dtype=float)
+        if abs(float(np.linalg.norm(t - centre)) - s.radius) > 1e-4 * s.radius:
+            return None
+        away = _away(scene, other, t, tol)
+        if away is None:
+            return None
+        ends.append((t, away, other))
+    if len(ends) != 2:
+        return None
+    (t1, d1, first), (t2, d2, second) = ends
+    r1 = t1 - centre
+    turn = float(r1[0] * -d1[1] - r1[1] * -d1[0])                # (T₁ − C) × (−d₁)
+    if abs(turn) <= tol * s.radius:
+        return None
+    sense = 1.0 if turn > 0 else -1.0
+    leaving = sense * perpendicular(t2 - centre)         # the travel round the circle at T₂
+    if float(leaving @ d2) <= 0:
+        return None
+    a1 = float(np.arctan2(*(t1 - centre)[::-1]))
+    a2 = float(np.arctan2(*(t2 - centre)[::-1]))
+    sweep = (a2 - a1) % (2 * np.pi) if sense > 0 else -((a1 - a2) % (2 * np.pi))
+    ts = a1 + np.linspace(0.0, sweep, 48)
+    arc = centre + s.radius * np.column_stack([np.cos(ts), np.sin(ts)])
+    moving = [b for b in (first, second) if not (b.frame or b.fixed)]
+    return arc, (moving[0].colour if moving else GROUND)
+
+
+def _away(scene: Any, body: BodyView, t: np.ndarray, tol: float) -> Optional[np.ndarray]:
+    """The unit direction along a strand from its contact `t` towards the rest of it (its
+    points and its other contacts); None when they lie on both sides, or nowhere."""
+    line = next(sh for sh in body.shapes if sh.kind == "line")
+    _, direction = line.line()
+    u = np.asarray(direction, dtype=float) / float(np.linalg.norm(direction))
+    rest = [np.asarray(p, dtype=float) for p in body.points.values()]
+    rest += [np.asarray(j.contact, dtype=float) for j in scene.joints
+             if j.contact is not None and body.name in (j.a, j.b)]
+    along = [float((p - t) @ u) for p in rest if float(np.linalg.norm(p - t)) > tol]
+    if not along or (min(along) < -tol and max(along) > tol):
+        return None
+    return u if max(along) > tol else -u
 
 
 def belt_loop(ctx: Context, body: BodyView, s: ShapeView) -> Optional[np.ndarray]:

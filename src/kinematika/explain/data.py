@@ -188,14 +188,14 @@ def what_point(ctx: Ctx, name: str) -> Optional[Msg]:
     else a point of the bodies that hold it, the preposition (the Basque genitive) on each
     ("un punt del terra, del pla esquerre i del pla dret", `what.of`); None when no body
     holds it."""
-    from .kinds import kind_key
+    from .kinds import joint_kind
 
     for b, carrier in ctx.model.bodies.items():
         if any(getattr(s, "center_point", None) == name for s in carrier.shapes):
             return msg("what.centre", body=Name(b, "body"))
     for j in ctx.model.joints:
         if j.at == name:
-            return msg("what.joint", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
+            return msg("what.joint", joint=Name(j.id, "joint"), kind=joint_kind(ctx, j),
                        a=Name(j.a, "body"), b=Name(j.b, "body"))
     holders = [b for b, carrier in ctx.model.bodies.items() if name in carrier.points]
     touching = _touching(ctx, name, holders)
@@ -259,13 +259,13 @@ def contact_rows(ctx: Ctx, doc: Any) -> dict[str, str]:
     if table is None:
         return named
     listed = {row[0].text for row in table.rows if isinstance(row[0], Name)}
-    from .kinds import kind_key
+    from .kinds import joint_kind
 
     for jid, name in ctx._contacts.items():
         j = ctx.model.joint(jid)
         if name in listed:
             continue
-        what = msg("what.contact", joint=Name(j.id, "joint"), kind=msg(f"joint.{kind_key(j, ctx.frame)}"),
+        what = msg("what.contact", joint=Name(j.id, "joint"), kind=joint_kind(ctx, j),
                    a=Name(j.a, "body"), b=Name(j.b, "body"))
         where: Any = Value(ctx.clean(ctx.pos(name), "len"), "len")
         at = _point_at(ctx, ctx.pos(name))

@@ -67,6 +67,34 @@ def kind_key(j: Any, frame: str) -> str:
     return "slot_fixed" if on_fixed_line(j, frame) else j.kind.name
 
 
+# the letter a lower pair's kind is written with in the notes (the R of "RRR", the P of "RRP"),
+# and the key of its name without it
+PAIR_LETTER = {"revolute": ("R", "joint.revolute_word"), "prismatic": ("P", "joint.prismatic_word")}
+
+
+def joint_kind(ctx: Any, j: Any) -> Any:
+    """What a joint is, as the joints' table and the points' glosses write it: "revolute (R)",
+    or the word alone ("hinge", "articulación") when the page already uses the letter for
+    something else, a parameter or a point (issue 30, twenty-ninth round (d): C5-E.5 wrote
+    "revolute (R) | chassis – wheel R | A" with R a radius, C5-E.3 "revolute (R) between …"
+    with R the wheels' radius: one letter, three meanings)."""
+    from .document import msg
+
+    key = kind_key(j, ctx.frame)
+    pair = PAIR_LETTER.get(key)
+    if pair is not None and pair[0] in _symbols(ctx):
+        return msg(pair[1])
+    return msg(f"joint.{key}")
+
+
+def _symbols(ctx: Any) -> set:
+    """The letters the page writes as symbols of its own: the parameters' names, the points'
+    (the model's, the instance's and the contacts' the explanation names)."""
+    model = ctx.model
+    found = set(model.parameters) | set(model.points) | set(getattr(ctx.inst, "points", {}) or {})
+    return found | set(getattr(ctx, "_contacts", {}).values())
+
+
 def slider(j: Any) -> bool:
     """A prismatic pair (the chain P): the bodies slide along a straight guide and turn together."""
     return j.kind.chain is Chain.P

@@ -99,7 +99,8 @@ def _sentence(ctx: Ctx, name: str, c: Any) -> Msg:
                    **{"from": _loc(ctx, view[0]), "to": _loc(ctx, view[1])})
     if isinstance(c, TwoCircles):
         (c1, c2), (r1, r2) = c.centers, c.radii
-        which = _which(ctx, c.side, c.near, a=_loc(ctx, c1), b=_loc(ctx, c2))
+        which = _plainly(ctx, name, c1, c2) if c.side is not None else None
+        which = which or _which(ctx, c.side, c.near, a=_loc(ctx, c1), b=_loc(ctx, c2))
         assembly = _assembly(ctx, name, c)
         if assembly:
             which = msg("pos.assembly", which=which, assembly=msg(f"pos.{assembly}"))
@@ -193,6 +194,30 @@ def _angle(ctx: Ctx, name: str, c: Polar) -> Any:
         theta -= math.atan2(b[1] - a[1], b[0] - a[0])
     deg = (math.degrees(theta) + 180.0) % 360.0 - 180.0
     return Value(round(deg, 6) + 0.0, "deg")
+
+
+def _plainly(ctx: Ctx, name: str, c1: Any, c2: Any) -> Optional[Msg]:
+    """Which of two circles' intersections, said as one sees it on the page when the two
+    points are one above the other (the centres at one height: "the upper one", issue 30,
+    twenty-ninth round (d): C5-E.4's U was "the one on the left looking from A1 to A2") or
+    side by side (the centres on one vertical: "the one on the left"); None otherwise, and
+    the side is said looking from one centre to the other. The points are mirror images
+    in the line of centres, so the one is above the other exactly when that line is level."""
+    try:
+        a, b, p = (ctx.num(ctx.pos(c)) if isinstance(c, str) else ctx.num(_loc(ctx, c).value)
+                   for c in (c1, c2, name))
+    except (KeyError, TypeError, ValueError):
+        return None
+    dx, dy = float(b[0] - a[0]), float(b[1] - a[1])
+    size = math.hypot(dx, dy)
+    if size == 0:
+        return None
+    mid = ((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)
+    if abs(dy) <= 1e-9 * size:
+        return msg("pos.upper" if float(p[1]) > mid[1] else "pos.lower")
+    if abs(dx) <= 1e-9 * size:
+        return msg("pos.leftmost" if float(p[0]) < mid[0] else "pos.rightmost")
+    return None
 
 
 def _which(ctx: Ctx, side: Optional[str], near: Optional[tuple], **names: Any) -> Msg:

@@ -10,7 +10,7 @@ from ..model.body_shapes import Circle, Disc
 from ..point_pair import PointPair
 from .freedom import by_data, dof_by_data
 from .context import Ctx
-from .kinds import kind_key, knife_edge, on_fixed_line, rolls, welds
+from .kinds import joint_kind, kind_key, knife_edge, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
 from .order import Step, as_found, merge_vehicles       # the order lists the steps as the text does them
 
@@ -71,7 +71,7 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     # part welded to the frame is part of it (its row says so, and the sentence below), not a
     # joint of the mechanism (the notes' inclined planes are "el terra inclinat")
     # a table's cell names the two bodies bare, as the bodies' table does (no article)
-    joints = [[msg(f"joint.{kind_key(j, ctx.frame)}"),
+    joints = [[joint_kind(ctx, j),
                Inline([Name(j.a, "body", bare=True), " – ", Name(j.b, "body", bare=True)]), _where(ctx, j)]
               for j in model.joints if not (welds(j) and ctx.fixed(j.a) and ctx.fixed(j.b))]
     sec.add(Table([msg("col.joint"), msg("col.bodies"), msg("col.where")], joints))

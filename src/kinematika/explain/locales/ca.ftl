@@ -131,6 +131,8 @@ shape-disc = disc
 shape-plane = pla
 joint-revolute = articulació (R)
 joint-prismatic = prismàtic (P)
+joint-revolute_word = articulació
+joint-prismatic_word = parell prismàtic
 joint-slot = passador en ranura
 joint-slot_fixed = contacte amb lliscament (un punt sobre una recta fixa)
 joint-wheel = roda (sense lliscament lateral)
@@ -384,6 +386,10 @@ pos-right = el que queda a la dreta mirant { ELISION($a) ->
         [vowel] d’{ $a }
        *[other] de { $a }
     } cap a { $b }
+pos-upper = el de dalt
+pos-lower = el de baix
+pos-leftmost = el de l’esquerra
+pos-rightmost = el de la dreta
 pos-ahead = el que és més endavant en el sentit de la recta { $line }
 pos-behind = el que és més enrere en el sentit de la recta { $line }
 pos-near = el més proper al punt de l’esbós { $near }
