@@ -73,7 +73,7 @@ structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body)
         [vowel] d’{ $body }
        *[other] de { $body }
     } situat a { $point }
-structure-subscript_rel = { $sym } és { $kind ->
+structure-subscript_rel = { $sym } és { WORD($kind) ->
         [rate2] l’acceleració angular
         [speed] la velocitat del punt { $point }
         [accel] l’acceleració del punt { $point }

@@ -46,7 +46,7 @@ structure-subscript_drag = { $equal } is the drag { WORD($kind) ->
        *[speed] velocity
     } of { $point }
 structure-subscript_member = { $sym } is the velocity of the point of { $body } at { $point }
-structure-subscript_rel = { $sym } is the { $kind ->
+structure-subscript_rel = { $sym } is the { WORD($kind) ->
         [rate2] angular acceleration of { $body }
         [speed] velocity of the point { $point } of { $body }
         [accel] acceleration of the point { $point } of { $body }

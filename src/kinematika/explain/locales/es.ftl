@@ -46,7 +46,7 @@ structure-subscript_drag = { $equal } es la { WORD($kind) ->
        *[speed] velocidad
     } de arrastre de { $point }
 structure-subscript_member = { $sym } es la velocidad del punto de { $body } situado en { $point }
-structure-subscript_rel = { $sym } es la { $kind ->
+structure-subscript_rel = { $sym } es la { WORD($kind) ->
         [rate2] aceleración angular de { $body }
         [speed] velocidad del punto { $point } de { $body }
         [accel] aceleración del punto { $point } de { $body }

@@ -46,7 +46,7 @@ structure-subscript_drag = { $equal } { $point } puntuaren arrastre-{ WORD($kind
        *[speed] abiadura
     } da
 structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuarekin bat datorren puntuaren abiadura da
-structure-subscript_rel = { $sym } { $body } solidoaren { $kind ->
+structure-subscript_rel = { $sym } { $body } solidoaren { WORD($kind) ->
         [rate2] azelerazio angeluarra
         [speed] { $point } puntuaren abiadura
         [accel] { $point } puntuaren azelerazioa

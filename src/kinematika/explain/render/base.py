@@ -258,7 +258,10 @@ class Renderer(ABC):
         plurals), everything else as a token replaced afterwards by its markup, so the
         catalogue's text is escaped and the variables' markup is not. A message that `lead`s a
         paragraph begins with a capital when its first word is the catalogue's (joint j3 … ->
-        Joint j3 …), never when it is a symbol (v_Q, ω_2)."""
+        Joint j3 …), never when it is a symbol (v_Q, ω_2). Only the variables the sentence
+        uses are written: writing one notes its symbols for the notation line (`subscripts`),
+        which glosses only what the page shows (twenty-ninth round (a): C5-1.1's line glossed
+        v_{J∈pulley rel strand1}, an argument its sentence left out)."""
         if m.key in NAMED_KEYS and self.named():          # no numbers to explain
             m = Msg(NAMED_KEYS[m.key], m.args)
         rendered: list[str] = []
@@ -275,11 +278,13 @@ class Renderer(ABC):
             slot.plain = self.plain(x)
             slot.n_names = len(inner) if isinstance(inner, Names) else 1
             slot.many = isinstance(inner, Name) and self.plural(inner)
-            rendered.append(self.arg(x))
+            rendered.append("")
             values.append(x)
             args[name] = slot
         args.setdefault("format", self.fmt)     # plain text (md) names no colours
         parts = TOKEN_RE.split(self.cat.format(m.key, args))
+        used = {int(p) for p in parts[1::2]}
+        rendered = [self.arg(x) if i in used else "" for i, x in enumerate(values)]   # in the arguments' order
         own = self.declined(parts, rendered, values) if self.lang == "eu" else {}
         out = [self.esc(p) if i % 2 == 0 else own.get(i, rendered[int(p)]) for i, p in enumerate(parts)]
         if lead and parts[0][:1].islower():
