@@ -289,7 +289,7 @@ pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta bi elementuko taldeetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
-order-blocks = Solidoak ordena honetan aurkitzen dira, bakoitza jadanik ezagunak diren solidoetatik:
+order-blocks = Solidoak ordena honetan ebazten dira, bakoitza jadanik ezagunak diren solidoetatik:
 order-item = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
         [one] solidotik
        *[other] solidoetatik
@@ -316,10 +316,10 @@ order-item_data = { $n }. { $kind }: { $bodies }, datuetatik.
 order-item_group_data = { $n }. { $bodies }, datuetatik.
 order-from = { $name }
 kind-input = sarrera (solido eragilea)
-kind-RRR = RRR loturak dituzten bi elementu
-kind-RRP = RRP loturak dituzten bi elementu
-kind-RPR = RPR loturak dituzten bi elementu
-kind-PRP = PRP loturak dituzten bi elementu
+kind-RRR = RRR loturak dituen bi elementuko taldea
+kind-RRP = RRP loturak dituen bi elementuko taldea
+kind-RPR = RPR loturak dituen bi elementuko taldea
+kind-PRP = PRP loturak dituen bi elementuko taldea
 kind-other = batera ebatzitako taldea
 step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
@@ -360,7 +360,7 @@ readoff-along_x = x norabidean:
 readoff-along_y = y norabidean:
 input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: haren puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
 input-prismatic = { $body } biratu gabe traslatzen da bere gidan zehar.
-other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
+other-intro = Solido hauek batera ebazten dira beren loturen baldintzetatik:
 cond-revolute = giltzadura { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
 cond-prismatic = lotura prismatikoa: { $b } solidoa { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
 cond-slot = { $point } ziria arteka batean: artekadun solidoarekiko abiadura artekaren norabidean dago.
