@@ -50,6 +50,7 @@ col-alpha = acceleració angular
 col-question = pregunta
 col-answer = resposta
 structure-subscripts = Notació: { $pairs }.
+rate-precession = la precessió
 structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }

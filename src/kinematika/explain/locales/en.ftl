@@ -38,6 +38,7 @@ col-alpha = angular acceleration
 col-question = question
 col-answer = answer
 structure-subscripts = Notation: { $pairs }.
+rate-precession = the precession
 structure-subscript_pair = { $sym } is the angular velocity of { $body }
 # a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
 structure-subscript_noted_rel = { $sym } is the angular velocity of { $body } relative to { $other }

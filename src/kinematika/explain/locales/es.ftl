@@ -38,6 +38,7 @@ col-alpha = aceleración angular
 col-question = pregunta
 col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
+rate-precession = la precesión
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
 # a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
 structure-subscript_noted_rel = { $sym } es la velocidad angular de { $body } respecto de { $other }

@@ -38,6 +38,7 @@ col-alpha = azelerazio angeluarra
 col-question = galdera
 col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
+rate-precession = prezesioa
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
 # a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
 structure-subscript_noted_rel = { $sym } { $body } solidoaren abiadura angeluarra da { $other } solidoarekiko

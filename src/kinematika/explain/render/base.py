@@ -25,6 +25,9 @@ LEGEND = "\ue002legend\ue003"        # where the legend of shortened subscripts 
 EARLY_LEGEND = "\ue002early\ue003"   # … or, when a block before it writes one, before that block
 CENTRES_INTRO = "\ue002centres\ue003"   # where the centres' first sentence goes (`render`)
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
+# the rates the notes name by the Euler angle a model's notation writes them with: ψ̇, a
+# body's rate about the vertical axis, is its precession (`BaseRenderer._rate_named`)
+EULER_RATES = {"psidot": "rate.precession"}
 # a symbol typed in a model's own words: one letter (with its marks: φ̇) that ends no word, an
 # underscore, then a subscript of letters and digits or one in braces (v_B, Ω_pinyó, ℜ_P,
 # a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word; a superscript
@@ -710,7 +713,7 @@ class Renderer(ABC):
                 # the model's notation writes its ω otherwise (C5-2.1's ψ̇ for ω_xassís): that
                 # symbol is defined here, before the steps write it (round 27b: ψ̇ was written
                 # in step 1's equation before the line "⇒ ψ̇ = ω_xassís = …")
-            said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
+            said = Msg("structure.subscript_pair", {"sym": self._rate_named(b), "body": Name(b, "body")})
             items += (["; "] if items else []) + [said]
             defined.add(b)
         for b, other in [k for k in getattr(self, "_noted_rel", {}) if f"{k[0]}/{k[1]}" not in self._rates_told]:
@@ -739,6 +742,16 @@ class Renderer(ABC):
         if not items:
             return ""
         return self.para(self.sentence(self.message(Msg(m.key, {"pairs": Inline(items)}), lead=True)))
+
+    def _rate_named(self, b: str) -> Sym | Inline:
+        """Body `b`'s ω as the notation line writes it, with the notes' name of the rate when
+        the model's notation writes it by an Euler angle's letter (EULER_RATES): ψ̇ (the
+        precession), the rate of a body about the vertical axis, as C5-2.1's chassis
+        (twenty-ninth round (a): the notes say "la precessió ψ̇", the page never did)."""
+        sym = Sym("ω", b, vector=False)
+        spelt = self.wording.symbol(rate_key("omega", b), self.lang) if b in self._noted else None
+        name = EULER_RATES.get(spelt or "")
+        return Inline([sym, " (", Msg(name), ")"]) if name else sym
 
     def _note_rel(self, base: str, point_: str, body_: str, other: str) -> None:
         """Note the first symbol the page writes with two bodies joined by "rel" (ω_{politja
