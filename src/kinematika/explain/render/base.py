@@ -33,7 +33,9 @@ EULER_RATES = {"psidot": "rate.precession"}
 # a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word; a superscript
 # after it is the symbol's power, not its subscript (v_P² is v_P squared: twenty-fourth round (e))
 TYPED_GEOM = "^{geom}"      # the geometric contact point's mark as a model's words type it
-SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_\u00b2\u00b3\u00b9\u2070-\u207f]+)")
+SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_\u00b2\u00b3\u00b9\u2070-\u207f]+)"
+                         "(?:\\^(\\{[^{}]+\\}|[^\\W_\u00b2\u00b3\u00b9\u2070-\u207f]+))?")
+# ...and a superscript after it (a_P^n, the normal component as the page writes it)
 # what a name's markup begins with before its first letter, by format
 LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"),
                   "tex": re.compile(r"(?:\\[A-Za-z]+\{)*")}
@@ -481,16 +483,16 @@ class Renderer(ABC):
         if TYPED_GEOM in text:      # J^{geom} in a note as the body writes the point (`geom_mark`)
             return self.geom_mark().join(self.typed(part) for part in text.split(TYPED_GEOM))
         parts = SUBSCRIPTED.split(text)
-        for k in range(1, len(parts), 3):
+        for k in range(1, len(parts), 4):
             self.typed_label(parts[k], parts[k + 1])
-        return "".join(self.subscripted(parts[k], parts[k + 1]) if k % 3 == 1
-                       else self.bodies_marked(part, self.esc) if k % 3 == 0 else "" for k, part in enumerate(parts))
+        return "".join(self.subscripted(parts[k], parts[k + 1], parts[k + 2] or "") if k % 4 == 1
+                       else self.bodies_marked(part, self.esc) if k % 4 == 0 else "" for k, part in enumerate(parts))
 
-    def subscripted(self, base: str, sub: str) -> str:
-        """A symbol typed base_sub in a model's words (sub perhaps in braces): as typed, which is
-        how a plain-text page (Markdown) writes a subscript itself (v_B, ω_{3/2}); a format with
-        markup overrides it."""
-        return self.esc(f"{base}_{sub}")
+    def subscripted(self, base: str, sub: str, sup: str = "") -> str:
+        """A symbol typed base_sub (or base_sub^sup, a_P^n) in a model's words (sub and sup
+        perhaps in braces): as typed, which is how a plain-text page (Markdown) writes a
+        subscript itself (v_B, ω_{3/2}, a_P^n); a format with markup overrides it."""
+        return self.esc(f"{base}_{sub}" + (f"^{sup}" if sup else ""))
 
     def typed_label(self, base: str, sub: str) -> None:
         """Note a body's own symbol typed in a model's words (C5-E.6's "r ω_pinoia = R

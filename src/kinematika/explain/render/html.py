@@ -79,10 +79,12 @@ class HtmlRenderer(Renderer):
         sub = self.centred(self.sub_text(s, centres=False), lambda t: escape(t, quote=False), self.symbol)
         return base + (f"<sub>{sub}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
 
-    def subscripted(self, base: str, sub: str) -> str:
+    def subscripted(self, base: str, sub: str, sup: str = "") -> str:
         """A symbol typed base_sub in a model's words as `symbol` writes one: the letter in
-        italics, the subscript (its braces dropped) below: ω<sub>pinyó</sub>, not ω_pinyó."""
-        return f"<i>{self.esc(base)}</i><sub>{self.esc(sub.removeprefix('{').removesuffix('}'))}</sub>"
+        italics, the subscript (its braces dropped) below: ω<sub>pinyó</sub>, not ω_pinyó;
+        a superscript typed after it (a_P^n) above."""
+        bare = [self.esc(t.removeprefix('{').removesuffix('}')) for t in (sub, sup)]
+        return f"<i>{self.esc(base)}</i><sub>{bare[0]}</sub>" + (f"<sup>{bare[1]}</sup>" if sup else "")
 
     def geom_mark(self) -> str:
         """J<sup>geom</sup>, inside a subscript too."""
