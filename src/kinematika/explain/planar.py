@@ -12,7 +12,7 @@ from typing import Optional
 
 from ..model.model import Joint
 from ..point_pair import PointPair
-from .context import Ctx, alpha_sym, omega_sym, read_along, read_off, segment, split_pair
+from .context import Ctx, alpha_sym, fixed_sign, omega_sym, read_along, read_off, segment, split_pair
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, point
 from .group import centre_site, group_blocks, still_contact
 from .said_first import conditions_first
@@ -498,9 +498,7 @@ def sensed(ctx: Ctx, value: Value) -> Value | Inline:
     ω_O2E = −5 rad/s (clockwise), ω_M = 4 rad/s (counter-clockwise) (twenty-ninth round (a):
     the data said the sign only); a zero rate, or a formula whose sign its symbols do not fix,
     as it is."""
-    from .answers import _sign_fixed
-
-    sign = _sign_fixed(ctx, value.value) if ctx.planar else 0
+    sign = fixed_sign(ctx, value.value) if ctx.planar else 0
     if sign == 0:
         return value
     return Inline([value, " (", msg("sense.ccw" if sign > 0 else "sense.cw"), ")"])
