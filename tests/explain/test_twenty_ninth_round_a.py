@@ -16,6 +16,7 @@ import re
 import yaml
 
 from kinematika.explain.catalogue import catalogue
+from kinematika.explain.render.base import Slot
 
 from .helpers import EXAMPLES, LANGS, SEEDS, over, rendered
 
@@ -63,8 +64,13 @@ def test_a_relative_point_velocity_is_glossed_as_a_velocity(lang):
     key matched, and fell to the rate)."""
     cat = catalogue(lang)
     args = {"sym": "SYM", "point": "J", "body": "BODY", "other": "OTHER"}
-    speed = cat.format("structure-subscript_rel", {**args, "kind": "speed"})
-    rate = cat.format("structure-subscript_rel", {**args, "kind": "rate"})
+
+    def kind(word: str) -> Slot:          # as the renderer hands a word to Fluent: a token
+        slot = Slot(f"\ue000{word}\ue001")
+        slot.plain = word
+        return slot
+    speed = cat.format("structure-subscript_rel", {**args, "kind": kind("speed")})
+    rate = cat.format("structure-subscript_rel", {**args, "kind": kind("rate")})
     assert ANGULAR[lang] in rate and ANGULAR[lang] not in speed, speed
     assert "J" in speed
 
