@@ -30,7 +30,7 @@ HEAD = re.compile(r"^([^\W\d_][\u0307\u0308]?(?:_(?:\{[^}]*\}|[^\s;(]+))?)")
 
 def _notation(md: str) -> tuple[str, str] | None:
     """The page's notation line and the text after it, or None."""
-    for lang, lead in NOTATION.items():
+    for lead in NOTATION.values():
         at = md.find("\n" + lead)
         if at >= 0:
             end = md.index("\n", at + 1)
@@ -201,14 +201,14 @@ def test_the_seeds_rates_are_given_with_their_senses(lang):
         assert f"{GIVEN[lang]}: {given} {sense[lang]}" in md, (name, given)
 
 
-STEADY = {"en": "Given: A moves at constant velocity: a_A = 0.",
-          "es": "Dato: A se mueve con velocidad constante: a_A = 0.",
-          "ca": "Dada: A es mou amb velocitat constant: a_A = 0.",
-          "eu": "Datua: A puntua abiadura konstantez mugitzen da: a_A = 0."}
-TURNS = {"en": "Given: the *crank O1A* turns at a constant rate: α_O1A = 0.",
-         "es": "Dato: la *manivela O1A* gira con velocidad angular constante: α_O1A = 0.",
-         "ca": "Dada: la *manovella O1A* gira amb velocitat angular constant: α_O1A = 0.",
-         "eu": "Datua: *O1A biradera* abiadura angeluar konstantez biratzen da: α_O1A = 0."}
+STEADY = {"en": "Given: A moves at constant velocity (a_A = 0).",
+          "es": "Dato: A se mueve con velocidad constante (a_A = 0).",
+          "ca": "Dada: A es mou amb velocitat constant (a_A = 0).",
+          "eu": "Datua: A puntua abiadura konstantez mugitzen da (a_A = 0)."}
+TURNS = {"en": "Given: the *crank O1A* turns at a constant rate (α_O1A = 0).",
+         "es": "Dato: la *manivela O1A* gira con velocidad angular constante (α_O1A = 0).",
+         "ca": "Dada: la *manovella O1A* gira amb velocitat angular constant (α_O1A = 0).",
+         "eu": "Datua: *O1A biradera* abiadura angeluar konstantez biratzen da (α_O1A = 0)."}
 
 
 @over(lang=LANGS)

@@ -444,12 +444,12 @@ driver-omega_sense = Dada: { $sym } = { $value }, { $faster ->
         }
     }.
 # a point given no acceleration: said as the notes say it, it moves at constant velocity (twenty-ninth round a)
-driver-steady = Dada: { $point } es mou amb velocitat constant: { $sym } = 0.
+driver-steady = Dada: { $point } es mou amb velocitat constant ({ $sym } = 0).
 # a body given no angular acceleration: it turns at a constant rate (twenty-ninth round a)
 driver-omega_steady = Dada: { $body } { COUNT($body) ->
         [many] giren
        *[one] gira
-    } amb velocitat angular constant: { $sym } = 0.
+    } amb velocitat angular constant ({ $sym } = 0).
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
 driver-whole = Dada: { $sym } = { $value }, { $heading }.

@@ -348,12 +348,12 @@ driver-omega_sense = Given: { $sym } = { $value }, { $faster ->
         } slowing down
     }.
 # a point given no acceleration: said as the notes say it, it moves at constant velocity (twenty-ninth round a)
-driver-steady = Given: { $point } moves at constant velocity: { $sym } = 0.
+driver-steady = Given: { $point } moves at constant velocity ({ $sym } = 0).
 # a body given no angular acceleration: it turns at a constant rate (twenty-ninth round a)
 driver-omega_steady = Given: { $body } { COUNT($body) ->
         [many] turn
        *[one] turns
-    } at a constant rate: { $sym } = 0.
+    } at a constant rate ({ $sym } = 0).
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 driver-whole = Given: { $sym } = { $value }, { $heading }.

@@ -342,12 +342,12 @@ driver-omega_sense = Dato: { $sym } = { $value }, { $faster ->
         }
     }.
 # a point given no acceleration: said as the notes say it, it moves at constant velocity (twenty-ninth round a)
-driver-steady = Dato: { $point } se mueve con velocidad constante: { $sym } = 0.
+driver-steady = Dato: { $point } se mueve con velocidad constante ({ $sym } = 0).
 # a body given no angular acceleration: it turns at a constant rate (twenty-ninth round a)
 driver-omega_steady = Dato: { $body } { COUNT($body) ->
         [many] giran
        *[one] gira
-    } con velocidad angular constante: { $sym } = 0.
+    } con velocidad angular constante ({ $sym } = 0).
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.

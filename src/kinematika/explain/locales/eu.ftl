@@ -348,9 +348,9 @@ driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
        *[other] { $w } abiadura angeluarraren aurkako noranzkoan: { $body } moteltzen ari da
     }.
 # a point given no acceleration: said as the notes say it, it moves at constant velocity (twenty-ninth round a)
-driver-steady = Datua: { $point } puntua abiadura konstantez mugitzen da: { $sym } = 0.
+driver-steady = Datua: { $point } puntua abiadura konstantez mugitzen da ({ $sym } = 0).
 # a body given no angular acceleration: it turns at a constant rate (twenty-ninth round a)
-driver-omega_steady = Datua: { $body } abiadura angeluar konstantez biratzen da: { $sym } = 0.
+driver-omega_steady = Datua: { $body } abiadura angeluar konstantez biratzen da ({ $sym } = 0).
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
 driver-whole = Datua: { $sym } = { $value }, { $heading }.
