@@ -66,7 +66,8 @@ def test_a_relative_rate_is_worked_out_before_a_term_uses_it():
                          text)
         assert said, w
         assert abs(_number(said.group(1)) - (answer(f"{w}_R") - answer(f"{w}_N"))) < 2e-3
-        used = text.index(f"{w}_{{R rel N}}·AF")      # the term's own segment (twenty-fourth round (c))
+        used = re.search(rf"\|?{w}_\{{R rel N\}}\|?·AF", text).start()     # the term's own segment
+        # (twenty-fourth round (c)); |ω|, a magnitude's factor, where the rate is negative (round 29a)
         assert said.start() < used, w
 
 

@@ -25,7 +25,8 @@ def test_a_symbol_in_a_models_words_is_set_as_a_symbol(lang, typed):
     assert typed in page
     # the remark writes the page's v_P since the twenty-fourth round (e) (was the notes' v(P))
     normal = "N" if lang == "eu" else "n"        # the Basque slides' a^N (twenty-seventh round (g))
-    assert rf"$\Re_{{\mathrm{{P}}}}$ = $v_{{\mathrm{{P}}}}$$^2$/a$^{normal}$" in page
+    # and the page's a_P^n since the twenty-ninth round (a)
+    assert rf"$\Re_{{\mathrm{{P}}}}$ = $v_{{\mathrm{{P}}}}$$^2$/$a_{{\mathrm{{P}}}}^{{\mathrm{{{normal}}}}}$" in page
     w = {"eu": "gurpila", "ca": "roda"}[lang]         # the model's R_roda per language
     assert "R_{" + w + "}" not in page and r"R_{\mathrm{" + w + "}}" in page
 

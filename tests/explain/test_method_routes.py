@@ -97,7 +97,7 @@ def test_rolling_pair_lever_by_axes_at_the_wheel_centre():
 def test_order_names_dyads_only_where_there_are(lang):
     # the slides write no word for a dyad (4.2: "R loturak dituzten mekanismoak", two
     # elements N and P): the Basque pages say it in theirs (fifth round)
-    dyad = {"en": "dyad", "es": "díada", "ca": "díade", "eu": "loturak dituzten bi elementu"}[lang]
+    dyad = {"en": "dyad", "es": "díada", "ca": "díade", "eu": "loturak dituen bi elementuko taldea"}[lang]
     one_wheel = rendered("seed_c5_1_7_semicylinder", lang, "md", False).lower()
     assert dyad not in one_wheel and "assur" not in one_wheel
     assert dyad in rendered("seed_001_r_pairs", lang, "md", False).lower()
@@ -120,5 +120,5 @@ def test_basque_pages_use_the_slides_words_for_a_dyad():
     for name in ("seed_001_r_pairs", "seed_001_p_pair_coriolis"):
         text = rendered(name, "eu", "md", False)
         assert "diada" not in text.lower(), name
-    assert "RRR loturak dituzten bi elementu: *N elementua* eta *P elementua*" in \
+    assert "RRR loturak dituen bi elementuko taldea: *N elementua* eta *P elementua*" in \
         rendered("seed_001_r_pairs", "eu", "md", False)

@@ -251,15 +251,20 @@ def _passes(p, q, a, b, pad=2.5) -> bool:
 # black arrow, and the caption names no step (`test_the_epicyclic_polygon_names_no_step`)
 # (C5-E.4's velocity polygon is left out since the twenty-ninth round (d): two arrows on one
 # line, v_U and v_PU, and four images at u with the T's foot B: `polygon.degenerate`)
+# Since round 29a a step whose one term is a point's own arrow, from an image at the pole
+# (o1 = o, j∈wheel1 = o) to the point's image, is drawn too, and named: 001's Step 1
+# v_A = v_AO1, the wheels' Step 2 v_C = v_CJ (the sixth reading: "Steps 2 and 3" left out
+# Step 1's a_AO1^n, the arrow from o to a)
 @pytest.mark.parametrize("name, first, last", [
-    ("seed_001_r_pairs", 3, 3), ("seed_c5_e5_unequal_wheels", 4, 4),
-    ("seed_c5_e6_bicycle", 4, 4), ("seed_001_p_pair_coriolis", 2, 2)])
+    ("seed_001_r_pairs", 1, 3), ("seed_c5_e5_unequal_wheels", 2, 4),
+    ("seed_c5_e6_bicycle", 2, 4), ("seed_001_p_pair_coriolis", 1, 2)])
 def test_a_velocity_polygons_caption_names_the_steps_it_draws(name, first, last):
     _, doc = explained(name)
     fig = next(b for b in _all(doc) if isinstance(b, DocFigure) and b.caption.key == "fig.level_v")
     args = fig.caption.args
     assert (args["first"], args["last"]) == (first, last)
-    assert f"of the equations of Step {first}," in rendered(name, "en")
+    said = {0: f"Step {first},", 1: f"Steps {first} and {last},"}.get(last - first, f"Steps {first} to {last},")
+    assert f"of the equations of {said}" in rendered(name, "en")
 
 
 def test_the_epicyclic_polygon_names_no_step():

@@ -65,6 +65,6 @@ def test_the_readers_cases_by_hand() -> None:
     # since round 27b (every planet turns about its centre, the sun about O); C5-E.6's Step 4
     assert "of the equations of Step" not in page
     ca = rendered("seed_c5_e6_bicycle", "ca", "md", drawings=False)
-    assert "les velocitats relatives de les equacions del pas 4" in ca
+    assert "les velocitats relatives de les equacions dels passos 2 a 4" in ca     # Step 2: v_C = v_CJ (round 29a)
     eu = rendered("seed_c5_1_7_semicylinder", "eu", "md", drawings=False)
     assert "1. urratseko ekuazioen terminoak" in eu

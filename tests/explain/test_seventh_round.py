@@ -64,8 +64,10 @@ def test_the_bicycles_remark_writes_the_pages_rates(lang):
     assert f"r <i>ω</i><sub>{small}</sub> = R <i>ω</i><sub>{big}</sub>" in html
     assert "Ω" not in html and f"ω_{small}" not in html
     # the remark writes the page's v_P since the twenty-fourth round (e) (was the notes' v(P))
-    normal = "ᴺ" if lang == "eu" else "ⁿ"        # the Basque slides' a^N (twenty-seventh round (g))
-    assert f"<i>ℜ</i><sub>P</sub> = <i>v</i><sub>P</sub>²/a{normal}" in html and "ℜ_P" not in html
+    normal = "N" if lang == "eu" else "n"        # the Basque slides' a^N (twenty-seventh round (g)),
+    # with its point as the page writes it since the twenty-ninth round (a): a_P^N, not aᴺ
+    assert (f"<i>ℜ</i><sub>P</sub> = <i>v</i><sub>P</sub>²/<i>a</i><sub>P</sub><sup>{normal}</sup>" in html
+            and "ℜ_P" not in html)
 
 
 def test_a_data_remarks_symbol_is_subscripted_in_html():

@@ -103,8 +103,7 @@ def test_bicycle_curvature_radius_is_a_length(lang):
     note = page[page.rindex(f"ℜ = (R/r)² {w}"):]
     assert "ρ" not in note
     normal = "N" if lang == "eu" else "n"        # the Basque slides' a^N (twenty-seventh round (g))
-    typed = "ᴺ" if lang == "eu" else "ⁿ"
-    assert f"ℜ_P = v_P²/a{typed} = (d − L)²/L" in note and f"d = {w} R/r" in note   # v_P: twenty-fourth round (e)
+    assert f"ℜ_P = v_P²/a_P^{normal} = (d − L)²/L" in note and f"d = {w} R/r" in note   # v_P: twenty-fourth round (e)
     assert f"ℜ_P = |v_P|² / |a_P^{normal}| = (R·{w} − L·r)²/(L·r²)" in page
 
 

@@ -75,7 +75,7 @@ def test_the_epicyclic_planet_by_hand():
     ("seed_c5_1_1_pulley_on_cable", "ca", "v_{J∈tram1}  =  v_G1  +  v_JG1"),
     ("seed_001_rolling_pair", "en", "v_{F∈R}  =  v_A  +  v_FA"),
     ("seed_c5_e1_cavity", "ca", "v_C  =  v_O  +    v_CO"),
-    ("seed_c5_e1_cavity", "ca", "a_C  =  a_O  +   a_CO^n   +   a_CO^t"),
+    ("seed_c5_e1_cavity", "ca", "a_C  =  a_O  +   a_CO^n   +    a_CO^t"),     # |α_OC|·OC above it (round 29a)
 ])
 def test_the_teachers_equations_by_hand(name, lang, equation):
     """The equations the teacher rewrote: C5-E.2's ring from M (ω_ring × OM: M of the ring),
@@ -120,7 +120,8 @@ def _sentences(page: str) -> list[tuple[str, str]]:
             heading = para
         if not para or para[0] in "|#!-" or (para.startswith("*") and para.endswith("*")):
             continue                    # tables, headings, figures, lists, captions
-        out += [(heading, s) for s in re.split(r"(?<=[.:;])\s+(?=[A-ZÀ-Ý*])", para)]
+        # a datum's lead ("Datua: *gurpila* …", "Given: A moves …") stays with its sentence (round 29a)
+        out += [(heading, s) for s in re.split(r"(?<=[.:;])(?<!Given:)(?<!Dato:)(?<!Dada:)(?<!Datua:)\s+(?=[A-ZÀ-Ý*])", para)]
     return out
 
 

@@ -251,7 +251,7 @@ def test_the_tricycle_precession_by_hand():
     """C5-2.1 (ca): the notes' ψ̇ is the chassis' angular velocity (C5.2: Ω_xassís = ψ̇); the
     notation line says it before step 1 writes v_{F,I_xassís} = ψ̇ × I_xassís F."""
     page = rendered("seed_c5_2_1_tricycle", "ca", drawings=False)
-    told = page.index("Notació: ψ̇ és la velocitat angular del *xassís*")
+    told = page.index("Notació: ψ̇ (la precessió) és la velocitat angular del *xassís*")     # round 29a
     assert told == page.index("ψ̇") - len("Notació: ")
     assert told < page.index("v_{FI_{xassís}} = ψ̇ × I_{xassís}F")
 

@@ -165,7 +165,7 @@ def test_g_the_wheels_by_hand() -> None:
     rod = plain_page("seed_c5_e3_wheels_with_rod", "en")
     note = rod.index("Notation: ω_wheel1 is the angular velocity of the *left wheel*; ω_wheel2 is the angular "
                      "velocity of the *right wheel*")
-    assert note < rod.index("Given: ω_wheel1 = −ω.") < rod.index("## Structure")
+    assert note < rod.index("Given: ω_wheel1 = −ω (clockwise).") < rod.index("## Structure")     # its sense: round 29a
     cable = plain_page("seed_c5_1_1_pulley_on_cable", "eu")
     assert "v_{J∈kable-zatia1} = v_{J∈polea}" in cable and "ezkerreko kable-zatia}" not in cable
 

@@ -9,6 +9,7 @@ from ..questions import QUESTIONS, answer
 from ..questions.curvature import intrinsic
 from .asked import worked
 from .context import Ctx, alpha_sym, composed, omega_sym, segment
+from .context import fixed_sign as _sign_fixed
 from .document import Ann, Derived, Equation, Inline, Msg, Name, Section, Sym, Table, Term, Told, Value, msg, point as point_name
 from .paths import circle_about
 from .terms import KNOWN
@@ -134,21 +135,6 @@ def _sensed(ctx: Ctx, q, found: Value) -> Any:
     if sign == 0:
         return found
     return msg("ans.sensed", value=Value(found.value, found.unit, True), sense=msg("sense.ccw" if sign > 0 else "sense.cw"))
-
-
-def _sign_fixed(ctx: Ctx, value: Any) -> int:
-    """+1 or −1 when a scalar's sign is known whatever its symbols' values (a number; a
-    formula positive or negative for every value of its positive parameters), else 0."""
-    import sympy
-
-    if getattr(value, "free_symbols", None):
-        expr = sympy.sympify(value)
-        return 1 if expr.is_positive else (-1 if expr.is_negative else 0)
-    try:
-        x = float(ctx.num(value))
-    except (TypeError, ValueError):
-        return 0
-    return (x > 0) - (x < 0)
 
 
 def _part_label(ctx: Ctx, q, key: str, sub: str | None) -> Any:

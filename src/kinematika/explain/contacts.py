@@ -23,7 +23,7 @@ from typing import Any, Optional
 
 from ..algebra.vectors import add, scale, sub
 from .asked import worked
-from .context import Ctx, composed, omega_sym, read_along, read_off, segment
+from .context import Ctx, composed, magnitude, omega_sym, read_along, read_off, segment
 from .document import (Ann, Derived, Drawing, Equation, Msg, Name, Names, Section, Sym, Term, Value, geometric_name,
                        joint as joint_name, msg)
 from .kinds import rolls
@@ -124,14 +124,15 @@ class Bar:
         if p == self.name:              # J^{geom} about C: not the material points' v_JC (one symbol, one value)
             name = pair_name(geometric_name(p), q)
         if level == "v":
-            mag = Ann("?") if unknown else Ann("M", [self.sym, f"·{back}"])     # the term's own segment (`terms.rotation_terms`)
+            mag = Ann("?") if unknown else Ann("M", magnitude(ctx, self.sym, self.omega) + [f"·{back}"])     # the term's own segment (`terms.rotation_terms`)
             return [Term(Sym("v", name), ctx.clean(ctx.space.cross(self.omega, r), "speed"), mag, Ann("perp", back),
                          [self.sym, f" × {seg}"], unknown, "rotation")]
         normal = scale(-self.omega ** 2, r)
         return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [self.sym, f"²·{back}"]),
                      Ann("para", back), [self.sym, f"² · {back}"], False, "normal"),
                 Term(Sym("a", name, "t"), ctx.clean(ctx.space.cross(self.alpha, r), "accel"),
-                     Ann("?") if unknown else Ann("M", [self.alpha_sym, f"·{back}"]), Ann("perp", back),
+                     Ann("?") if unknown else Ann("M", magnitude(ctx, self.alpha_sym, self.alpha) + [f"·{back}"]),
+                     Ann("perp", back),
                      [self.alpha_sym, f" × {seg}"], unknown, "tangential")]
 
     def blocks(self, level: str, with_bar: bool = True) -> list:

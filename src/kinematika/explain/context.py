@@ -381,6 +381,30 @@ def composed(absolute: Sym, relative: Sym, drag: Sym, frame: bool = False) -> li
     return [absolute, " = ", relative, " + ", drag] + ([" = 0"] if frame else []) + [" ⇒ "]
 
 
+def fixed_sign(ctx: "Ctx", value: Any) -> int:
+    """+1 or −1 when a scalar's sign is known whatever its symbols' values (a number; a
+    formula positive or negative for every value of its positive parameters), else 0."""
+    import sympy
+
+    if getattr(value, "free_symbols", None):
+        expr = sympy.sympify(value)
+        return 1 if expr.is_positive else (-1 if expr.is_negative else 0)
+    try:
+        x = float(ctx.num(value))
+    except (TypeError, ValueError):
+        return 0
+    return (x > 0) - (x < 0)
+
+
+def magnitude(ctx: "Ctx", sym: Sym, value: Any) -> list:
+    """A planar rate as a magnitude's factor (the M row of an equation): the symbol where its
+    value is positive whatever the symbols' values, else its absolute value, |ω_wheel|·CJ
+    where ω_wheel = −ω (twenty-ninth round (a): a magnitude is never a signed product); a
+    rate that is zero has no sign to take off (α_O1A·AO1 with α_O1A = 0)."""
+    plain = fixed_sign(ctx, value) > 0 or ctx.is_zero(value, "")
+    return [sym] if plain else ["|", sym, "|"]
+
+
 def omega_sym(body: str, relative_to: Optional[str] = None, vector: bool = False) -> Sym:
     """ω of `body` (relative to another body when given); a vector in 3D."""
     sub_ = body if relative_to is None else f"{body}/{relative_to}"

@@ -32,7 +32,7 @@ import numpy as np
 
 from ..algebra.vectors import dot, scale, sub
 from ..model.model import Joint
-from .context import Ctx, alpha_sym, omega_sym, segment
+from .context import Ctx, alpha_sym, magnitude, omega_sym, segment
 from .document import (CENTRE_POINT_RE, Ann, Derived, Equation, Msg, Name, Sym, Term, Value, body as body_name, joint as joint_name, msg,
                        point as point_name)
 from .order import jointed
@@ -1302,7 +1302,7 @@ class Writer:
             return [Term(Sym("a", label, "t"), ctx.clean(along, unit), Ann("M" if given else "?"),
                          Ann("para", plane), [], not given, "point"),
                     Term(Sym("a", label, "n"), ctx.clean(sub(whole, along), unit),
-                         Ann("M", [w, "·", Sym("v", label, vector=False)]), Ann("perp", plane),
+                         Ann("M", magnitude(ctx, w, ctx.omega(wheel.b)) + ["·", Sym("v", label, vector=False)]), Ann("perp", plane),
                          [w, " × ", Sym("v", label)], False, "wheel")]
         d = ctx.inst.direction(driver.along, driver.where)
         along = scale(dot(whole, d), d)

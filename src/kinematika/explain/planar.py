@@ -12,7 +12,7 @@ from typing import Optional
 
 from ..model.model import Joint
 from ..point_pair import PointPair
-from .context import Ctx, alpha_sym, omega_sym, read_along, read_off, segment, split_pair
+from .context import Ctx, alpha_sym, fixed_sign, omega_sym, read_along, read_off, segment, split_pair
 from .document import Ann, Derived, Equation, Inline, Msg, Section, Sym, Term, Value, body, joint, msg, point
 from .group import centre_site, group_blocks, still_contact
 from .said_first import conditions_first
@@ -493,6 +493,17 @@ def held_msg(ctx: Ctx, joint_id: str, level: str) -> Msg:
                a=body(j.a), b=body(j.b), sym=joint_rate_sym(ctx, joint_id, level))
 
 
+def sensed(ctx: Ctx, value: Value) -> Value | Inline:
+    """A planar rate given as data with its sense in words, as the answers give one:
+    ω_O2E = −5 rad/s (clockwise), ω_M = 4 rad/s (counter-clockwise) (twenty-ninth round (a):
+    the data said the sign only); a zero rate, or a formula whose sign its symbols do not fix,
+    as it is."""
+    sign = fixed_sign(ctx, value.value) if ctx.planar else 0
+    if sign == 0:
+        return value
+    return Inline([value, " (", msg("sense.ccw" if sign > 0 else "sense.cw"), ")"])
+
+
 def driver_msg(ctx: Ctx, d, level: str) -> Msg:
     """The known motion the model states, as values (never the model's own text)."""
     given = d.accel if level == "a" else d.value
@@ -503,12 +514,15 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         unit = "rate" if level == "v" else "rate2"
         value = inst.vector(given, where) if spatial else inst.value(given, where)
         shown = Value(ctx.clean(value, unit), unit)
+        said = shown if spatial else sensed(ctx, shown)
+        if level == "a" and not spatial and d.relative_to in (None, ctx.frame) and ctx.is_zero(value, unit):
+            return msg("driver.omega_steady", sym=sym, body=body(d.body))    # the notes: ω constant
         if level == "a" and not spatial and d.relative_to in (None, ctx.frame):     # a body's own turning
             faster = speeding(ctx, inst.value(d.value, where), value)
             if faster is not None:
-                return msg("driver.omega_sense", sym=sym, value=shown, body=body(d.body),
+                return msg("driver.omega_sense", sym=sym, value=said, body=body(d.body),
                            w=omega_sym(d.body, d.relative_to), faster=int(faster))
-        return msg("driver.omega", sym=sym, value=shown)
+        return msg("driver.omega", sym=sym, value=said)
     if d.kind == "joint":
         turning = turns(ctx.model.joint(d.joint))
         unit = ("rate" if turning else "speed") if level == "v" else ("rate2" if turning else "accel")
@@ -516,7 +530,7 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         if turning and held(ctx, d, level):
             return held_msg(ctx, d.joint, level)
         if turning:                 # the pin's rate as the symbol the composition writes later
-            return msg("driver.omega", sym=joint_rate_sym(ctx, d.joint, level), value=value)
+            return msg("driver.omega", sym=joint_rate_sym(ctx, d.joint, level), value=sensed(ctx, value))
         key = "driver.slide" if level == "v" else "driver.slide_accel"
         return msg(key, joint=joint(d.joint), value=value)
     unit = "speed" if level == "v" else "accel"
@@ -535,6 +549,8 @@ def driver_msg(ctx: Ctx, d, level: str) -> Msg:
         vector = inst.vector(given, where)
         along = None
     value = Value(ctx.clean(vector, unit), unit)
+    if level == "a" and all(ctx.is_zero(c, unit) for c in vector):      # the notes: constant velocity
+        return msg("driver.steady", sym=sym, point=point(d.point.point))
     words = heading(ctx, vector, along)
     return msg("driver.velocity", sym=sym, value=value) if words is None else \
         msg("driver.whole", sym=sym, value=value, heading=words)

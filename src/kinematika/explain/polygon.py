@@ -65,7 +65,11 @@ def term_steps(ctx: Ctx, fig: Figure, steps: list[tuple[int, list[Equation]]]) -
     images) of the level polygon `fig`: the one list its caption's "the equations of Steps
     … (black)" is read from. Counting every step with an equation of the level named steps
     whose equations draw only blue arrows, or none (001's revolute pairs: "Steps 1 to 3" over
-    Step 3's two terms; C5-E.6's bicycle "1 to 3" over one v_PC; issue 30, nineteenth round (d))."""
+    Step 3's two terms; C5-E.6's bicycle "1 to 3" over one v_PC; issue 30, nineteenth round (d)).
+    A step's term drawn as a point's own arrow, from an image at the pole to the point's image
+    (001's a_AO1^n from o1 = o to a, a_A itself), is drawn all the same: its step is named
+    (twenty-ninth round (a): "the equations of Steps 2 and 3" left out Step 1, whose one
+    term is the arrow from o to a)."""
     whole = _Builder(ctx)                  # the polygon's arrows as built, before `_separated` moves them
     for _, eqs in steps:
         for eq in eqs:
@@ -80,7 +84,7 @@ def term_steps(ctx: Ctx, fig: Figure, steps: list[tuple[int, list[Equation]]]) -
             poly.equation(eq)
         size = poly.size
         if any(_close(a.start, b.start, size) and _close(a.end, b.end, size)
-               for a in poly.arrows if a.style != "result" for b in black):
+               for a in poly.terms for b in whole.arrows):
             out.append(n)
     return out
 
@@ -257,6 +261,7 @@ class _Builder:
         self.centres: dict[str, Any] = {}   # an instant centre's point at rest (v_{I_rod}) -> its symbol
         self.symbols: dict[tuple, Any] = {}  # an arrow's ends -> its symbol (a blue arrow is drawn without it)
         self.sides: list[list[tuple]] = []  # each side drawn, as its terms' drawn vectors (`_repeated`)
+        self.terms: list[Arrow] = []        # each term between images, before a point's own arrow hides it (`term_steps`)
 
     def at_pole(self, xy: tuple) -> bool:
         return math.hypot(*xy) <= SAME * self._scale()
@@ -325,6 +330,7 @@ class _Builder:
                     self._arrow(Arrow(origin, end, term.sym, style if self.single else "result"), label=self.single)
                 else:
                     style = ("unknown" if term.unknown else "known") if self.single else "known"
+                    self.terms.append(Arrow(tip, end, term.sym, style))
                     self._arrow(Arrow(tip, end, term.sym, style))
                 tip = end
         end = self.ctx.drawn(eq.target.value)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from ..algebra.vectors import scale
 from ..model.model import Joint
 from ..point_pair import PointPair
-from .context import Ctx, alpha_sym, omega_sym, segment
+from .context import Ctx, alpha_sym, magnitude, omega_sym, segment
 from .document import Ann, Msg, Name, Sym, Term, Value, body, joint, msg
 
 UNIT = {"v": "speed", "a": "accel"}
@@ -63,7 +63,8 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
     name = pair_name(p, q) + (f"/{relative_to}" if relative_to else "")
     if level == "v":
         value = sp.cross(ctx.omega(body, relative_to), r)
-        mag = Ann("?") if unknown else Ann("M", [w, f"·{back}"] if ctx.planar else "")
+        mag = Ann("?") if unknown else Ann("M", magnitude(ctx, w, ctx.omega(body, relative_to)) + [f"·{back}"]
+                                           if ctx.planar else "")
         return [Term(Sym("v", name), ctx.clean(value, "speed"), mag, Ann("perp", back),
                      [w, f" × {seg}"], unknown, "rotation")]
     om = ctx.omega(body, relative_to)
@@ -75,7 +76,8 @@ def rotation_terms(ctx: Ctx, level: str, body: str, q: str, p: str, unknown: boo
     return [Term(Sym("a", name, "n"), ctx.clean(normal, "accel"), Ann("M", [w, f"²·{back}"] if ctx.planar else ""),
                  Ann("para", back) if ctx.planar else Ann("D"), how_n, False, "normal"),
             Term(Sym("a", name, "t"), ctx.clean(tangential, "accel"),
-                 Ann("?") if unknown else Ann("M", [al, f"·{back}"] if ctx.planar else ""), Ann("perp", back),
+                 Ann("?") if unknown else Ann("M", magnitude(ctx, al, ctx.alpha(body, relative_to)) + [f"·{back}"]
+                                              if ctx.planar else ""), Ann("perp", back),
                  [al, f" × {seg}"], unknown, "tangential")]
 
 
@@ -105,7 +107,8 @@ def slide_terms(ctx: Ctx, level: str, frame: str, moving: str, point: str, guide
     return [Term(Sym("a", name), ctx.clean(a_rel, "accel"), mag,
                  Ann("para", guide), [], unknown, "slide"),
             Term(Sym("a", name, sub_key="sub.cor"), ctx.clean(coriolis, "accel"),
-                 Ann("M", ["2·", w, "·", rel]), Ann("perp", guide), ["2 ", w, " × ", rel], False,
+                 Ann("M", ["2·"] + (magnitude(ctx, w, ctx.omega(frame)) if ctx.planar else [w]) + ["·", rel]),
+                 Ann("perp", guide), ["2 ", w, " × ", rel], False,
                  "coriolis")]
 
 

@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-from .context import Ctx, omega_sym, read_along, read_off, segment
+from .context import Ctx, magnitude, omega_sym, read_along, read_off, segment
 from .document import Ann, Derived, Equation, Inline, Name, Sym, Term, Value, centre_point, msg
 from .given import whole_along
 from .kinds import knife_edge, pin_only, pins
@@ -353,7 +353,7 @@ def _from_centre(ctx: Ctx, b: str, centre: tuple, why: list, witness: str, speed
         rel = Sym("v", segment(p, centre_pt))
         value = ctx.clean(ctx.vel(b, p), "speed")
         own = segment(p, centre_pt)             # magnitude and direction in the term's own order
-        term = Term(rel, value, Ann("?") if k == 0 else Ann("M", [w, "·", own]),
+        term = Term(rel, value, Ann("?") if k == 0 else Ann("M", magnitude(ctx, w, ctx.omega(b)) + ["·", own]),
                     Ann("perp", own), [w, " × ", arm], k == 0, "rotation")
         target = Term(Sym("v", ctx.point_label(p, b)), value, Ann("M"), Ann("D"), kind="point")
         out.append(Equation(target, [[rest, term]], "v", ctx.ref(p, b), figure=False))

@@ -50,6 +50,7 @@ col-alpha = acceleració angular
 col-question = pregunta
 col-answer = resposta
 structure-subscripts = Notació: { $pairs }.
+rate-precession = la precessió
 structure-subscript_pair = { $sym } és la velocitat angular { ELISION($body) ->
         [vowel] d’{ $body }
        *[other] de { $body }
@@ -73,7 +74,7 @@ structure-subscript_member = { $sym } és la velocitat del punt { ELISION($body)
         [vowel] d’{ $body }
        *[other] de { $body }
     } situat a { $point }
-structure-subscript_rel = { $sym } és { $kind ->
+structure-subscript_rel = { $sym } és { WORD($kind) ->
         [rate2] l’acceleració angular
         [speed] la velocitat del punt { $point }
         [accel] l’acceleració del punt { $point }
@@ -448,6 +449,13 @@ driver-omega_sense = Dada: { $sym } = { $value }, { $faster ->
            *[one] es frena
         }
     }.
+# a point given no acceleration: said as the notes say it, it moves at constant velocity (twenty-ninth round a)
+driver-steady = Dada: { $point } es mou amb velocitat constant ({ $sym } = 0).
+# a body given no angular acceleration: it turns at a constant rate (twenty-ninth round a)
+driver-omega_steady = Dada: { $body } { COUNT($body) ->
+        [many] giren
+       *[one] gira
+    } amb velocitat angular constant ({ $sym } = 0).
 driver-velocity = Dada: { $sym } = { $value }.
 driver-along = Dada: la component de { $sym } segons { $along } és { $value }.
 driver-whole = Dada: { $sym } = { $value }, { $heading }.

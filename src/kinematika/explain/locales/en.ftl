@@ -38,6 +38,7 @@ col-alpha = angular acceleration
 col-question = question
 col-answer = answer
 structure-subscripts = Notation: { $pairs }.
+rate-precession = the precession
 structure-subscript_pair = { $sym } is the angular velocity of { $body }
 # a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
 structure-subscript_noted_rel = { $sym } is the angular velocity of { $body } relative to { $other }
@@ -46,7 +47,7 @@ structure-subscript_drag = { $equal } is the drag { WORD($kind) ->
        *[speed] velocity
     } of { $point }
 structure-subscript_member = { $sym } is the velocity of the point of { $body } at { $point }
-structure-subscript_rel = { $sym } is the { $kind ->
+structure-subscript_rel = { $sym } is the { WORD($kind) ->
         [rate2] angular acceleration of { $body }
         [speed] velocity of the point { $point } of { $body }
         [accel] acceleration of the point { $point } of { $body }
@@ -352,6 +353,13 @@ driver-omega_sense = Given: { $sym } = { $value }, { $faster ->
            *[one] is
         } slowing down
     }.
+# a point given no acceleration: said as the notes say it, it moves at constant velocity (twenty-ninth round a)
+driver-steady = Given: { $point } moves at constant velocity ({ $sym } = 0).
+# a body given no angular acceleration: it turns at a constant rate (twenty-ninth round a)
+driver-omega_steady = Given: { $body } { COUNT($body) ->
+        [many] turn
+       *[one] turns
+    } at a constant rate ({ $sym } = 0).
 driver-velocity = Given: { $sym } = { $value }.
 driver-along = Given: the component of { $sym } along { $along } is { $value }.
 driver-whole = Given: { $sym } = { $value }, { $heading }.

@@ -38,6 +38,7 @@ col-alpha = aceleración angular
 col-question = pregunta
 col-answer = respuesta
 structure-subscripts = Notación: { $pairs }.
+rate-precession = la precesión
 structure-subscript_pair = { $sym } es la velocidad angular de { $body }
 # a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
 structure-subscript_noted_rel = { $sym } es la velocidad angular de { $body } respecto de { $other }
@@ -46,7 +47,7 @@ structure-subscript_drag = { $equal } es la { WORD($kind) ->
        *[speed] velocidad
     } de arrastre de { $point }
 structure-subscript_member = { $sym } es la velocidad del punto de { $body } situado en { $point }
-structure-subscript_rel = { $sym } es la { $kind ->
+structure-subscript_rel = { $sym } es la { WORD($kind) ->
         [rate2] aceleración angular de { $body }
         [speed] velocidad del punto { $point } de { $body }
         [accel] aceleración del punto { $point } de { $body }
@@ -346,6 +347,13 @@ driver-omega_sense = Dato: { $sym } = { $value }, { $faster ->
            *[one] se frena
         }
     }.
+# a point given no acceleration: said as the notes say it, it moves at constant velocity (twenty-ninth round a)
+driver-steady = Dato: { $point } se mueve con velocidad constante ({ $sym } = 0).
+# a body given no angular acceleration: it turns at a constant rate (twenty-ninth round a)
+driver-omega_steady = Dato: { $body } { COUNT($body) ->
+        [many] giran
+       *[one] gira
+    } con velocidad angular constante ({ $sym } = 0).
 driver-velocity = Dato: { $sym } = { $value }.
 driver-along = Dato: la componente de { $sym } según { $along } es { $value }.
 driver-whole = Dato: { $sym } = { $value }, { $heading }.

@@ -38,6 +38,7 @@ col-alpha = azelerazio angeluarra
 col-question = galdera
 col-answer = erantzuna
 structure-subscripts = Notazioa: { $pairs }.
+rate-precession = prezesioa
 structure-subscript_pair = { $sym } { $body } solidoaren abiadura angeluarra da
 # a relative rate the model's notation writes otherwise (C5-2.1's δ̇ for ω_{fork rel chassis}): defined where the notation line is (twenty-eighth round d)
 structure-subscript_noted_rel = { $sym } { $body } solidoaren abiadura angeluarra da { $other } solidoarekiko
@@ -46,7 +47,7 @@ structure-subscript_drag = { $equal } { $point } puntuaren arrastre-{ WORD($kind
        *[speed] abiadura
     } da
 structure-subscript_member = { $sym } { $body } solidoaren { $point } puntuarekin bat datorren puntuaren abiadura da
-structure-subscript_rel = { $sym } { $body } solidoaren { $kind ->
+structure-subscript_rel = { $sym } { $body } solidoaren { WORD($kind) ->
         [rate2] azelerazio angeluarra
         [speed] { $point } puntuaren abiadura
         [accel] { $point } puntuaren azelerazioa
@@ -295,7 +296,7 @@ pos-crossed = konfigurazio gurutzatua: barrak gurutzatzen dira
 
 sec-order = Ebazpen-ordena
 order-assur = Mekanismoa bere sarreretan eta bi elementuko taldeetan deskonposatzen da; bakoitza jadanik ezagunak diren solidoetatik ebazten da:
-order-blocks = Solidoak ordena honetan aurkitzen dira, bakoitza jadanik ezagunak diren solidoetatik:
+order-blocks = Solidoak ordena honetan ebazten dira, bakoitza jadanik ezagunak diren solidoetatik:
 order-item = { $n }. { $kind }: { $bodies }, { $known } { $known_n ->
         [one] solidotik
        *[other] solidoetatik
@@ -322,10 +323,10 @@ order-item_data = { $n }. { $kind }: { $bodies }, datuetatik.
 order-item_group_data = { $n }. { $bodies }, datuetatik.
 order-from = { $name }
 kind-input = sarrera (solido eragilea)
-kind-RRR = RRR loturak dituzten bi elementu
-kind-RRP = RRP loturak dituzten bi elementu
-kind-RPR = RPR loturak dituzten bi elementu
-kind-PRP = PRP loturak dituzten bi elementu
+kind-RRR = RRR loturak dituen bi elementuko taldea
+kind-RRP = RRP loturak dituen bi elementuko taldea
+kind-RPR = RPR loturak dituen bi elementuko taldea
+kind-PRP = PRP loturak dituen bi elementuko taldea
 kind-other = batera ebatzitako taldea
 step-title = { $n }. urratsa: { $kind } — { $bodies }
 step-title_group = { $n }. urratsa: { $bodies }
@@ -352,6 +353,10 @@ driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
         [1] { $w } abiadura angeluarraren noranzko berean: { $body } azkartzen ari da
        *[other] { $w } abiadura angeluarraren aurkako noranzkoan: { $body } moteltzen ari da
     }.
+# a point given no acceleration: said as the notes say it, it moves at constant velocity (twenty-ninth round a)
+driver-steady = Datua: { $point } puntua abiadura konstantez mugitzen da ({ $sym } = 0).
+# a body given no angular acceleration: it turns at a constant rate (twenty-ninth round a)
+driver-omega_steady = Datua: { $body } abiadura angeluar konstantez biratzen da ({ $sym } = 0).
 driver-velocity = Datua: { $sym } = { $value }.
 driver-along = Datua: { $sym } bektorearen { $along } norabideko osagaia { $value } da.
 driver-whole = Datua: { $sym } = { $value }, { $heading }.
@@ -366,7 +371,7 @@ readoff-along_x = x norabidean:
 readoff-along_y = y norabidean:
 input-revolute = { $body } { $point } puntu finkoaren inguruan biratzen da: haren puntuek { $point } zentrodun zirkunferentziak deskribatzen dituzte.
 input-prismatic = { $body } biratu gabe traslatzen da bere gidan zehar.
-other-intro = Solido hauek batera aurkitzen dira beren loturen baldintzetatik:
+other-intro = Solido hauek batera ebazten dira beren loturen baldintzetatik:
 cond-revolute = giltzadura { $point } puntuan: { $point } { $a } eta { $b } solidoen puntu bat da.
 cond-prismatic = lotura prismatikoa: { $b } solidoa { $a } solidoaren gainean irristatzen da, harekiko biratu gabe.
 cond-slot = { $point } ziria arteka batean: artekadun solidoarekiko abiadura artekaren norabidean dago.

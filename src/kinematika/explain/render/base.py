@@ -25,12 +25,17 @@ LEGEND = "\ue002legend\ue003"        # where the legend of shortened subscripts 
 EARLY_LEGEND = "\ue002early\ue003"   # … or, when a block before it writes one, before that block
 CENTRES_INTRO = "\ue002centres\ue003"   # where the centres' first sentence goes (`render`)
 TOKEN_RE = re.compile("\ue000(\\d+)\ue001")
+# the rates the notes name by the Euler angle a model's notation writes them with: ψ̇, a
+# body's rate about the vertical axis, is its precession (`BaseRenderer._rate_named`)
+EULER_RATES = {"psidot": "rate.precession"}
 # a symbol typed in a model's own words: one letter (with its marks: φ̇) that ends no word, an
 # underscore, then a subscript of letters and digits or one in braces (v_B, Ω_pinyó, ℜ_P,
 # a_{F∈gurpila}); snake_case (draw_at) is not one, its letter ends a word; a superscript
 # after it is the symbol's power, not its subscript (v_P² is v_P squared: twenty-fourth round (e))
 TYPED_GEOM = "^{geom}"      # the geometric contact point's mark as a model's words type it
-SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_\u00b2\u00b3\u00b9\u2070-\u207f]+)")
+SUBSCRIPTED = re.compile("(?<![\\w\u0300-\u036f])([^\\W\\d_][\u0300-\u036f]*)_(\\{[^{}]+\\}|[^\\W_\u00b2\u00b3\u00b9\u2070-\u207f]+)"
+                         "(?:\\^(\\{[^{}]+\\}|[^\\W_\u00b2\u00b3\u00b9\u2070-\u207f]+))?")
+# ...and a superscript after it (a_P^n, the normal component as the page writes it)
 # what a name's markup begins with before its first letter, by format
 LEADING_MARKUP = {"html": re.compile(r"(?:<[^>]*>)*"), "md": re.compile(r"[*_]*"),
                   "tex": re.compile(r"(?:\\[A-Za-z]+\{)*")}
@@ -258,7 +263,10 @@ class Renderer(ABC):
         plurals), everything else as a token replaced afterwards by its markup, so the
         catalogue's text is escaped and the variables' markup is not. A message that `lead`s a
         paragraph begins with a capital when its first word is the catalogue's (joint j3 … ->
-        Joint j3 …), never when it is a symbol (v_Q, ω_2)."""
+        Joint j3 …), never when it is a symbol (v_Q, ω_2). Only the variables the sentence
+        uses are written: writing one notes its symbols for the notation line (`subscripts`),
+        which glosses only what the page shows (twenty-ninth round (a): C5-1.1's line glossed
+        v_{J∈pulley rel strand1}, an argument its sentence left out)."""
         if m.key in NAMED_KEYS and self.named():          # no numbers to explain
             m = Msg(NAMED_KEYS[m.key], m.args)
         rendered: list[str] = []
@@ -275,11 +283,13 @@ class Renderer(ABC):
             slot.plain = self.plain(x)
             slot.n_names = len(inner) if isinstance(inner, Names) else 1
             slot.many = isinstance(inner, Name) and self.plural(inner)
-            rendered.append(self.arg(x))
+            rendered.append("")
             values.append(x)
             args[name] = slot
         args.setdefault("format", self.fmt)     # plain text (md) names no colours
         parts = TOKEN_RE.split(self.cat.format(m.key, args))
+        used = {int(p) for p in parts[1::2]}
+        rendered = [self.arg(x) if i in used else "" for i, x in enumerate(values)]   # in the arguments' order
         own = self.declined(parts, rendered, values) if self.lang == "eu" else {}
         out = [self.esc(p) if i % 2 == 0 else own.get(i, rendered[int(p)]) for i, p in enumerate(parts)]
         if lead and parts[0][:1].islower():
@@ -473,16 +483,16 @@ class Renderer(ABC):
         if TYPED_GEOM in text:      # J^{geom} in a note as the body writes the point (`geom_mark`)
             return self.geom_mark().join(self.typed(part) for part in text.split(TYPED_GEOM))
         parts = SUBSCRIPTED.split(text)
-        for k in range(1, len(parts), 3):
+        for k in range(1, len(parts), 4):
             self.typed_label(parts[k], parts[k + 1])
-        return "".join(self.subscripted(parts[k], parts[k + 1]) if k % 3 == 1
-                       else self.bodies_marked(part, self.esc) if k % 3 == 0 else "" for k, part in enumerate(parts))
+        return "".join(self.subscripted(parts[k], parts[k + 1], parts[k + 2] or "") if k % 4 == 1
+                       else self.bodies_marked(part, self.esc) if k % 4 == 0 else "" for k, part in enumerate(parts))
 
-    def subscripted(self, base: str, sub: str) -> str:
-        """A symbol typed base_sub in a model's words (sub perhaps in braces): as typed, which is
-        how a plain-text page (Markdown) writes a subscript itself (v_B, ω_{3/2}); a format with
-        markup overrides it."""
-        return self.esc(f"{base}_{sub}")
+    def subscripted(self, base: str, sub: str, sup: str = "") -> str:
+        """A symbol typed base_sub (or base_sub^sup, a_P^n) in a model's words (sub and sup
+        perhaps in braces): as typed, which is how a plain-text page (Markdown) writes a
+        subscript itself (v_B, ω_{3/2}, a_P^n); a format with markup overrides it."""
+        return self.esc(f"{base}_{sub}" + (f"^{sup}" if sup else ""))
 
     def typed_label(self, base: str, sub: str) -> None:
         """Note a body's own symbol typed in a model's words (C5-E.6's "r ω_pinoia = R
@@ -705,7 +715,7 @@ class Renderer(ABC):
                 # the model's notation writes its ω otherwise (C5-2.1's ψ̇ for ω_xassís): that
                 # symbol is defined here, before the steps write it (round 27b: ψ̇ was written
                 # in step 1's equation before the line "⇒ ψ̇ = ω_xassís = …")
-            said = Msg("structure.subscript_pair", {"sym": Sym("ω", b, vector=False), "body": Name(b, "body")})
+            said = Msg("structure.subscript_pair", {"sym": self._rate_named(b), "body": Name(b, "body")})
             items += (["; "] if items else []) + [said]
             defined.add(b)
         for b, other in [k for k in getattr(self, "_noted_rel", {}) if f"{k[0]}/{k[1]}" not in self._rates_told]:
@@ -734,6 +744,16 @@ class Renderer(ABC):
         if not items:
             return ""
         return self.para(self.sentence(self.message(Msg(m.key, {"pairs": Inline(items)}), lead=True)))
+
+    def _rate_named(self, b: str) -> Sym | Inline:
+        """Body `b`'s ω as the notation line writes it, with the notes' name of the rate when
+        the model's notation writes it by an Euler angle's letter (EULER_RATES): ψ̇ (the
+        precession), the rate of a body about the vertical axis, as C5-2.1's chassis
+        (twenty-ninth round (a): the notes say "la precessió ψ̇", the page never did)."""
+        sym = Sym("ω", b, vector=False)
+        spelt = self.wording.symbol(rate_key("omega", b), self.lang) if b in self._noted else None
+        name = EULER_RATES.get(spelt or "")
+        return Inline([sym, " (", Msg(name), ")"]) if name else sym
 
     def _note_rel(self, base: str, point_: str, body_: str, other: str) -> None:
         """Note the first symbol the page writes with two bodies joined by "rel" (ω_{politja

@@ -10,7 +10,7 @@ from ..document import Drawing, Equation, Figure, Name, Sym
 from ...text import shown_lines
 from .base import Renderer
 from .svg import embedded, svg
-from .names import html_name
+from .names import html_marked, html_name
 from .unicode import unicode_formula
 
 CSS = """
@@ -27,6 +27,9 @@ ul.terms{margin:.1rem 0 .6rem;font-size:.95rem}figure{margin:.4rem 0 1rem}
 figcaption{font-size:.85rem;color:#555}b.v{font-style:italic}
 span.pt,span.jt{font-family:"DejaVu Sans",Arial,sans-serif;font-size:.9em}span.jt{color:#444}
 p.sample{font-size:.85rem;color:#8a5a00}span.mk{font-family:"DejaVu Sans",Arial,sans-serif}
+span.dt,span.dd{position:relative;display:inline-block}span.dt::after,span.dd::after{position:absolute;
+left:0;right:0;top:.08em;padding-left:.2em;text-align:center;font-style:normal}span.dt::after{content:"\\02D9"}
+span.dd::after{content:"\\00A8"}span.tl::after{top:-.2em}
 figure.drawing svg{width:432pt;max-width:100%;height:auto}figure svg{max-width:100%;height:auto}
 @media print{@page{size:A4;margin:2cm}body{max-width:none;margin:0;padding:0;font-size:10.5pt}
 figure,table.eq{break-inside:avoid}h2,h3{break-after:avoid}}
@@ -50,8 +53,8 @@ class HtmlRenderer(Renderer):
         """Text escaped; a letter with a combining mark (θ̇ in a note) in the sans font, and
         in italics when the mark is a dot (a rate, `DOTTED`), as `symbol` writes it."""
         text = escape(shown_lines(text), quote=False)
-        return MARKED.sub(lambda m: (f'<i><span class="mk">{m[1]}</span></i>' if DOTTED.fullmatch(m[1])
-                                     else f'<span class="mk">{m[1]}</span>'), text)
+        return MARKED.sub(lambda m: (f'<i>{html_marked(m[1])}</i>' if DOTTED.fullmatch(m[1])
+                                     else html_marked(m[1])), text)
 
     def name(self, n: Name) -> str:
         """Points upright and sans serif (as the figures letter them), bodies in italics,
@@ -71,15 +74,17 @@ class HtmlRenderer(Renderer):
         """A symbol: a vector's letter bold, a scalar's italic, with its subscript and superscript;
         a letter with a combining mark (the notes' ψ̇, δ̇) in the sans font, as `html_name`
         sets one: the serif italic puts δ̇'s dot into the δ's curl."""
-        letter = MARKED.sub(r'<span class="mk">\1</span>', escape(s.base))
+        letter = MARKED.sub(lambda m: html_marked(m[1]), escape(s.base))
         base = f'<b class="v">{letter}</b>' if s.vector else f"<i>{letter}</i>"
         sub = self.centred(self.sub_text(s, centres=False), lambda t: escape(t, quote=False), self.symbol)
         return base + (f"<sub>{sub}</sub>" if sub else "") + (f"<sup>{escape(s.sup)}</sup>" if s.sup else "")
 
-    def subscripted(self, base: str, sub: str) -> str:
+    def subscripted(self, base: str, sub: str, sup: str = "") -> str:
         """A symbol typed base_sub in a model's words as `symbol` writes one: the letter in
-        italics, the subscript (its braces dropped) below: ω<sub>pinyó</sub>, not ω_pinyó."""
-        return f"<i>{self.esc(base)}</i><sub>{self.esc(sub.removeprefix('{').removesuffix('}'))}</sub>"
+        italics, the subscript (its braces dropped) below: ω<sub>pinyó</sub>, not ω_pinyó;
+        a superscript typed after it (a_P^n) above."""
+        bare = [self.esc(t.removeprefix('{').removesuffix('}')) for t in (sub, sup)]
+        return f"<i>{self.esc(base)}</i><sub>{bare[0]}</sub>" + (f"<sup>{bare[1]}</sup>" if sup else "")
 
     def geom_mark(self) -> str:
         """J<sup>geom</sup>, inside a subscript too."""

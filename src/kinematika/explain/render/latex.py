@@ -147,11 +147,13 @@ class LatexRenderer(Renderer):
         """A symbol in running text: `math_sym` in $…$."""
         return f"${self.math_sym(s)}$"
 
-    def subscripted(self, base: str, sub: str) -> str:
+    def subscripted(self, base: str, sub: str, sup: str = "") -> str:
         """A symbol typed base_sub in a model's words (`Renderer.typed` finds it, for every
         format) as `math_sym` writes one: the letter in math, the subscript (its braces
-        dropped) upright below it, $\\omega_{\\mathrm{besoa}}$, not the text ω\\_besoa."""
-        return f"${tex_math(base).strip()}_{{{tex_math_text(sub.removeprefix('{').removesuffix('}'))}}}$"
+        dropped) upright below it, $\\omega_{\\mathrm{besoa}}$, not the text ω\\_besoa; a
+        superscript typed after it (a_P^n) upright above."""
+        bare = [tex_math_text(t.removeprefix('{').removesuffix('}')) for t in (sub, sup)]
+        return f"${tex_math(base).strip()}_{{{bare[0]}}}" + (f"^{{{bare[1]}}}" if sup else "") + "$"
 
     def power(self, mantissa: str, exponent: int) -> str:
         """m × 10ⁿ in math."""

@@ -78,6 +78,23 @@ def unicode_name(name: str) -> str:
     return text
 
 
+# letters whose top stands above the x-height (δ, θ, b): an overdot sits higher over them
+TALL = frozenset("βδζθϑλξφψbdfhklt" + "ABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789" + "ΓΔΘΛΞΠΣΦΨΩ")
+# a dot or two over a letter (a rate, θ̇; a second derivative, θ̈), drawn by the page's CSS
+OVERDOTS = {"\u0307": "dt", "\u0308": "dd"}
+
+
+def html_marked(text: str) -> str:
+    """A letter with its combining marks (escaped) in HTML, in the sans font (class `mk`). A
+    dot or two over it is drawn by the CSS (classes `dt`, `dd`; `tl` over a tall letter),
+    centred over the italic letter: the font's own combining dot, placed for the upright
+    letter, stood off to the right of an italic δ and read as δ́ (twenty-ninth round (a))."""
+    letter, marks = text[:1], text[1:]
+    if marks in OVERDOTS:
+        return f'<span class="mk {OVERDOTS[marks]}{" tl" if letter in TALL else ""}">{letter}</span>'
+    return f'<span class="mk">{text}</span>'
+
+
 def html_name(name: str) -> str:
     """HTML: θ<sub>2</sub>, x<sub>B</sub>, every part escaped. A base with a combining mark
     (θ̇, v̇) is set in the sans font (class `mk`): the serif one has no mark for Greek."""
@@ -86,7 +103,7 @@ def html_name(name: str) -> str:
     w = written(name)
     base = escape(w.base, quote=False)
     if any(unicodedata.combining(c) for c in w.base):
-        base = f'<span class="mk">{base}</span>'
+        base = re.sub("([^\u0300-\u036f][\u0300-\u036f]+)", lambda m: html_marked(m[1]), base)
     return (base + (f"<sub>{escape(w.sub, quote=False)}</sub>" if w.sub else "")
             + (f"<sup>{escape(w.sup, quote=False)}</sup>" if w.sup else ""))
 
