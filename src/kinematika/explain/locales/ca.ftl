@@ -559,7 +559,7 @@ path-found = { $b } { COUNT($b) ->
 path-line = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
-    } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), { $ac } = { $al } × { $arm }.
+    } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), la seva acceleració és només la seva component tangencial: { $ac } = { $at } = { $al } × { $arm }.
 rolling-equal = Sense lliscament al contacte { $point }: { $sym } = { $other }.
 rolling-same = { $gear ->
         [1] { $b } { COUNT($b) ->

@@ -439,7 +439,7 @@ path-line = { $b } { COUNT($b) ->
     } without slipping on { $a }, which does not move. { COUNT($b) ->
         [many] Their
        *[one] Its
-    } centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
+    } centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its acceleration is its tangential part alone: { $ac } = { $at } = { $al } × { $arm }.
 rolling-equal = No slip at the contact { $point }: { $sym } = { $other }.
 rolling-same = { $gear ->
         [1] { $b } { COUNT($b) ->

@@ -414,7 +414,7 @@ path-found = { $b } { COUNT($b) ->
 path-line = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
-        } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
+        } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su aceleración es solo su componente tangencial: { $ac } = { $at } = { $al } × { $arm }.
 rolling-equal = Sin deslizamiento en el contacto { $point }: { $sym } = { $other }.
 rolling-same = { $gear ->
         [1] { $b } { COUNT($b) ->
