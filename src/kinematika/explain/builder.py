@@ -412,8 +412,9 @@ def refer_reverses(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
                 key = "composition.reverse"
                 extra: dict[str, Any] = {"kind": unit}          # the quantity, never "motion"
                 if unit == "accel" and _at_rest(ctx, m.group(1), m.group(2), m.group(3)):
-                    key, extra = "composition.reverse_rolling", {"kind": unit, "vel": Sym("v", t.sym.sub),
-                                                                 "wb": omega_sym(m.group(2)), "wa": omega_sym(m.group(3))}
+                    # no slip: v_rel = 0, no Coriolis term, hence the reverse (never the
+                    # general 2 (ω_b − ω_a) × v_rel, beyond the course: issue 30, round 29 c)
+                    key, extra = "composition.reverse_rolling", {"kind": unit, "vel": Sym("v", t.sym.sub)}
                 _insert_before(sec, eq, msg(key, sym=t.sym, back=rev[0].sym,
                                             value=Value(t.value, unit), step=rev[1], **extra))
 

@@ -798,7 +798,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: l’oposada { WORD($
         [accel] de l’acceleració
        *[speed] de la velocitat
     } relativa trobada al pas { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }. En general les dues acceleracions relatives no són oposades: la seva suma és l’oposada de la suma dels dos termes de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nul·la aquí, ja que { $vel } = 0 (contacte de rodolament).
+composition-reverse_rolling = Sense lliscament: { $vel } = 0, de manera que no hi ha terme de Coriolis i { $sym } = −{ $back } = { $value }, l’oposada de l’acceleració relativa trobada al pas { $step }.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)

@@ -582,7 +582,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the r
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. In general the two relative accelerations are not opposite: their sum is the opposite of the sum of the two Coriolis terms, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, zero here, since { $vel } = 0 (rolling contact).
+composition-reverse_rolling = No slip: { $vel } = 0, so there is no Coriolis term and { $sym } = −{ $back } = { $value }, the reverse of the relative acceleration found in Step { $step }.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)

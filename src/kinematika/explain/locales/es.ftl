@@ -545,7 +545,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { W
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. En general las dos aceleraciones relativas no son opuestas: su suma es la opuesta de la suma de los dos términos de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nula aquí, ya que { $vel } = 0 (contacto de rodadura).
+composition-reverse_rolling = Sin deslizamiento: { $vel } = 0, así que no hay término de Coriolis y { $sym } = −{ $back } = { $value }, la opuesta de la aceleración relativa hallada en el paso { $step }.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)

@@ -492,7 +492,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa. Oro har, bi azelerazio erlatiboak ez dira aurkakoak: haien batura bi Coriolisen terminoen baturaren aurkakoa da, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, hemen nulua, { $vel } = 0 baita (errodadura-kontaktua).
+composition-reverse_rolling = Irristadurarik ez: { $vel } = 0; beraz, ez dago Coriolisen terminorik, eta { $sym } = −{ $back } = { $value }, { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
