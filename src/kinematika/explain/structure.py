@@ -472,15 +472,20 @@ def mechanism_figure(ctx: Ctx) -> Figure:
 
 def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
     """ω (and α, when accelerations are explained) of every moving body, the solver's values:
-    every body whose rate a step finds is listed, a belt's or chain's run too (it translates
-    with the carrier of the axles, ω_run = ω_carrier; twentieth round g: C5-1.6's belt, C5-E.6's
-    chain were found and left out)."""
+    every body whose rate a step finds is listed, but a belt's or chain's run, to which the
+    notes give no rate (issue 30, round 29 c; round 20g had listed it); a fixed pulley a drive
+    wraps is listed with its 0, which the drive's step uses (ω_pulley1 = 0)."""
     def value(x, unit: str) -> Value:
         return Value(ctx.clean(x if ctx.planar else tuple(x), unit), unit)
 
+    from .drives import drives
+
+    runs = {d.line for d in drives(ctx)}
+    # the ground, when a drive wraps it (C5-1.6's fixed pulley, whose 0 the step uses)
+    ground = [ctx.frame] if any(ctx.frame in (d.a, d.b) for d in drives(ctx)) else []
     rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
-            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies
-            if not ctx.fixed(b)]   # a weld to the frame: part of it
+            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ground + list(ctx.model.moving_bodies)
+            if b == ctx.frame or not ctx.fixed(b) and b not in runs]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)
 
 def _named_ground(ctx: Ctx, name: str) -> bool:

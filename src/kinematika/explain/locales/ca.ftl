@@ -1246,11 +1246,9 @@ check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
     }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades a «{ sec-velocities }», { $values }: coincideixen.
-how-run_translates = (el tram recte { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
     } es trasllada)
-how-translates = (el tram recte { ELISION($line) ->
         [vowel] d’{ $line }
        *[other] de { $line }
     } es trasllada respecte { ELISION($body) ->

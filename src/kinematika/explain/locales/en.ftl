@@ -880,8 +880,6 @@ check-willis = Willis' formula: seen from { $carrier }, the train is an ordinary
        *[other] , with { $r1 } and { $r2 }
     }. With the angular velocities found in “{ sec-velocities }”, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } slips on neither { $a } nor { $b }: { $equation }, so { $ratio }; with the angular velocities found in “{ sec-velocities }”, { $values }: they agree.
-how-translates = (the straight run of { $line } translates relative to { $body })
-how-run_translates = (the straight run of { $line } translates)
 pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(with { $radii })

@@ -819,8 +819,6 @@ check-willis = Fórmula de Willis: vista desde { $carrier }, el tren es ordinari
        *[other] , con { $r1 } y { $r2 }
     }. Con las velocidades angulares halladas en «{ sec-velocities }», { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas en «{ sec-velocities }», { $values }: coinciden.
-how-translates = (el tramo recto de { $line } se traslada respecto de { $body })
-how-run_translates = (el tramo recto de { $line } se traslada)
 pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(con { $radii })

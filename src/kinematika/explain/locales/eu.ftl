@@ -742,8 +742,6 @@ check-willis = Willisen formula: { $carrier } solidotik ikusita, trena arrunta d
        *[other] , { $r1 } eta { $r2 } izanik
     }. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
 check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; «{ sec-velocities }» atalean aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
-how-translates = ({ $line } solidoaren zati zuzena { $body } solidoarekiko traslatzen da)
-how-run_translates = ({ $line } solidoaren zati zuzena traslatzen da)
 pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}({ $radii } izanik)
