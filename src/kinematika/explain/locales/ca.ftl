@@ -1135,6 +1135,7 @@ centre-check = Comprovació amb les velocitats trobades a «{ sec-velocities }»
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (es trasllada: el seu CIR { $centre } és a l’infinit)
 how-constant_rate = ({ $sym } = { $value } és constant: { $line } conserva la seva longitud, i la seva velocitat angular la fixen els radis i { $rates }, que és constant)
+how-constant_speed = ({ $point } recorre la circumferència de radi { $line } = { $length } centrada a { $centre } amb la celeritat constant { $v } = { $speed }, de manera que { $sym } = { $value } és constant)
 idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el punt de contacte { $point } n’és el CIR, de manera que:
 idle-symmetry = { $body } té la mateixa disposició que { $like } (el mateix radi, els mateixos enllaços amb els mateixos sòlids): per simetria gira igual:
 idle-unused = { $bodies } no { $count ->

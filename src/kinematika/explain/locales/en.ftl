@@ -796,6 +796,7 @@ centre-check = Check with the velocities found in “{ sec-velocities }”: on t
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (it translates: its instant centre { $centre } is at infinity)
 how-constant_rate = ({ $sym } = { $value } is constant: { $line } keeps its length, and its rate is set by the radii and by { $rates }, which is constant)
+how-constant_speed = ({ $point } runs on the circle of radius { $line } = { $length } about { $centre } at the constant speed { $v } = { $speed }, so { $sym } = { $value } is constant)
 idle-rolling = { $body } rolls without slipping on { $fixed }: its contact point { $point } is its instant centre, so:
 idle-symmetry = { $body } is placed like { $like } (the same radius, the same joints with the same bodies): by symmetry it turns alike:
 idle-unused = { $bodies } { $count ->

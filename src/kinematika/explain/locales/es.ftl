@@ -744,6 +744,7 @@ centre-check = Comprobación con las velocidades halladas en «{ sec-velocities 
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (se traslada: su CIR { $centre } está en el infinito)
 how-constant_rate = ({ $sym } = { $value } es constante: { $line } conserva su longitud, y su velocidad angular la fijan los radios y { $rates }, que es constante)
+how-constant_speed = ({ $point } recorre la circunferencia de radio { $line } = { $length } centrada en { $centre } con la celeridad constante { $v } = { $speed }, así que { $sym } = { $value } es constante)
 idle-rolling = { $body } { COUNT($body) ->
         [many] ruedan
        *[one] rueda

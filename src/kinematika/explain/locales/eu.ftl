@@ -670,6 +670,7 @@ centre-check = Egiaztapena «{ sec-velocities }» atalean aurkitutako abiadureki
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = (traslatzen da: { $centre } biraketa-zentro instantaneoa infinituan dago)
 how-constant_rate = ({ $sym } = { $value } konstantea da: { $line } zuzenak bere luzera gordetzen du, eta haren abiadura angeluarra erradioek eta { $rates } konstanteak finkatzen dute)
+how-constant_speed = ({ $point } puntuak { $centre } zentroko eta { $line } = { $length } erradioko zirkunferentzia deskribatzen du { $v } = { $speed } abiadura konstantez; beraz, { $sym } = { $value } konstantea da)
 idle-rolling = { $body } irristatu gabe errodatzen da { $fixed } solidoaren gainean: kontaktuko { $point } puntua haren biraketa-zentro instantaneoa da; beraz:
 idle-symmetry = { $body } { $like } bezala kokatuta dago (erradio bera, lotura berak solido berekin): simetriagatik berdin biratzen da:
 idle-unused = { $bodies } ez { $count ->
