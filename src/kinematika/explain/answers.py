@@ -113,6 +113,12 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
     for key, v in value.items():
         if key in QUESTIONS[q.kind].working:        # derived in a step before (`intrinsic_lines`)
             continue
+        if key == "center" and isinstance(getattr(q, "target", None), PointRef):
+            label = ctx.point_label(q.target.point, q.target.body)
+            where = centre_from(ctx, q.target, label, value)
+            if where is not None:           # said from its point, as the curvature section says it
+                out.append(("", msg("ans.center_from", where=where)))
+                continue
         if isinstance(v, dict):
             for sub, w in v.items():
                 out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS.get(sub) or UNITS[key] or "")))
@@ -267,8 +273,39 @@ def curvature_steps(ctx: Ctx, q) -> list:
     radius = Value(ctx.clean(result["radius"], "len"), "len")
     out.append(Derived(Sym("ℜ", label, vector=False), ["|", Sym("v", label), "|² / |", Sym("a", label, "n"), "|"],
                        radius, kind="radius", source=normal, arm=ctx.clean(v, "speed")))
-    out.append(msg("curvature.centre", point=Name(label), centre=Value(ctx.clean(result["center"], "len"), "len")))
+    where = centre_from(ctx, ref, label, result)
+    if where is not None:
+        out.append(msg("curvature.centre_from", point=Name(label), where=where))
+    else:
+        out.append(msg("curvature.centre", point=Name(label), centre=Value(ctx.clean(result["center"], "len"), "len")))
     return out
+
+
+# a symbolic centre of curvature whose coordinates take more operations than this is said
+# from its point ("ℜ_P above P"), not by its coordinates (C5-E.6's (b; R_roda + r + … − R))
+LONG_CENTRE = 8
+
+
+def centre_from(ctx: Ctx, ref: PointRef, label: str, result: dict) -> Msg | None:
+    """Where a symbolic centre of curvature is, said from its point along the normal — "at ℜ_P
+    above P" — when its coordinates are past reading (issue 30, round 29 c: C5-E.6's
+    "(b; R_roda + r + (R·R_roda − L·r)²/(L·r²) − L − R)"); None when they are short, or the
+    model is numeric, which the coordinates then say best."""
+    import sympy
+
+    centre = result.get("center")
+    if not ctx.symbolic or centre is None or result.get("radius") is None:
+        return None
+    shown = ctx.clean(centre, "len")
+    if sum(sympy.count_ops(sympy.sympify(c)) for c in shown) <= LONG_CENTRE:
+        return None
+    at = ctx.pos(ref.point)
+    dx, dy = (float(ctx.num(c)) - float(ctx.num(p)) for c, p in zip(centre, at))
+    size = max(abs(dx), abs(dy)) or 1.0
+    side = ("up" if dy > 0 else "down") if abs(dx) < 1e-9 * size else \
+        ("right" if dx > 0 else "left") if abs(dy) < 1e-9 * size else "other"
+    return msg("curvature.from", side=side, rho=Sym("ℜ", label, vector=False), point=Name(label),
+               an=Sym("a", label, "n"))
 
 
 def circle_steps(ctx: Ctx, label: str, origin: str, result: dict) -> list:

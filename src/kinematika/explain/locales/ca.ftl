@@ -695,6 +695,32 @@ curvature-centre = El centre de curvatura de la trajectòria { ELISION($point) -
         [vowel] d’{ $point }
        *[other] de { $point }
     } és a { $centre }, del costat de l’acceleració normal.
+curvature-centre_from = El centre de curvatura de la trajectòria { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } és { $where }.
+curvature-from = { WORD($side) ->
+        [up] a { $rho } per sobre { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }
+        [down] a { $rho } per sota { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }
+        [left] a { $rho } a l’esquerra { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }
+        [right] a { $rho } a la dreta { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }
+       *[other] a { $rho } { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }, en la direcció de la seva acceleració normal
+    }
 curvature-intrinsic = Amb { $speed }, la tangent unitària és { $tangent }; { $split }, amb { $tangential }, i { $rest }, { $normal }:
 sec-answers = Respostes
 answers-none = El model no fa preguntes.
@@ -755,6 +781,7 @@ ans-from = distància { ELISION($point) ->
     }
 ans-direction = direcció
 ans-center = centre de curvatura
+ans-center_from = centre de curvatura { $where }
 ans-tangent = tangent unitària
 ans-slide = velocitat al llarg de l’eix
 ans-translation = una translació: sense circumferència d’inflexions

@@ -521,6 +521,14 @@ curvature-straight = The normal acceleration of { $point } is zero: its path is 
 curvature-circle = Point { $point }: it keeps its distance from the fixed point { $o }, so its path is the circle of radius { $radius } about { $o }; the radius of curvature is that radius:
 curvature-circle_centre = The centre of curvature of the path of { $point } is { $o }, at { $centre }.
 curvature-centre = The centre of curvature of the path of { $point } is at { $centre }, on the side of the normal acceleration.
+curvature-centre_from = The centre of curvature of the path of { $point } is { $where }.
+curvature-from = { WORD($side) ->
+        [up] { $rho } above { $point }
+        [down] { $rho } below { $point }
+        [left] { $rho } to the left of { $point }
+        [right] { $rho } to the right of { $point }
+       *[other] { $rho } from { $point }, along { $an }
+    }
 curvature-intrinsic = With { $speed }, the unit tangent is { $tangent }; { $split }, with { $tangential }, and { $rest }, { $normal }:
 sec-answers = Answers
 answers-none = The model asks no questions.
@@ -539,6 +547,7 @@ ans-point = position
 ans-from = distance from { $point }
 ans-direction = direction
 ans-center = centre of curvature
+ans-center_from = centre of curvature { $where }
 ans-tangent = unit tangent
 ans-slide = velocity along the axis
 ans-translation = a translation: no inflection circle

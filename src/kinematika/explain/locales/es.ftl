@@ -493,6 +493,14 @@ curvature-straight = La aceleración normal de { $point } es nula: su trayectori
 curvature-circle = Punto { $point }: mantiene la distancia al punto fijo { $o }, así que su trayectoria es la circunferencia de radio { $radius } centrada en { $o }; el radio de curvatura es ese radio:
 curvature-circle_centre = El centro de curvatura de la trayectoria de { $point } es { $o }, en { $centre }.
 curvature-centre = El centro de curvatura de la trayectoria de { $point } está en { $centre }, del lado de la aceleración normal.
+curvature-centre_from = El centro de curvatura de la trayectoria de { $point } está { $where }.
+curvature-from = { WORD($side) ->
+        [up] a { $rho } por encima de { $point }
+        [down] a { $rho } por debajo de { $point }
+        [left] a { $rho } a la izquierda de { $point }
+        [right] a { $rho } a la derecha de { $point }
+       *[other] a { $rho } de { $point }, según { $an }
+    }
 curvature-intrinsic = Con { $speed }, la tangente unitaria es { $tangent }; { $split }, con { $tangential }, y { $rest }, { $normal }:
 sec-answers = Respuestas
 answers-none = El modelo no hace preguntas.
@@ -511,6 +519,7 @@ ans-point = posición
 ans-from = distancia a { $point }
 ans-direction = dirección
 ans-center = centro de curvatura
+ans-center_from = centro de curvatura { $where }
 ans-tangent = tangente unitaria
 ans-slide = velocidad a lo largo del eje
 ans-translation = una traslación: sin circunferencia de inflexiones

@@ -443,6 +443,14 @@ curvature-straight = { $point } puntuaren azelerazio normala nulua da: haren ibi
 curvature-circle = { $point } puntua: { $o } puntu finkoarekiko distantzia mantentzen du; beraz, haren ibilbidea { $o } zentroko eta { $radius } erradioko zirkunferentzia da, eta kurbadura-erradioa erradio hori da:
 curvature-circle_centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $o } puntua da, { $centre } posizioan.
 curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
+curvature-centre_from = { $point } puntuaren ibilbidearen kurbadura-zentroa { $where } dago.
+curvature-from = { WORD($side) ->
+        [up] { $point } puntuaren gainetik { $rho } distantziara
+        [down] { $point } puntuaren azpitik { $rho } distantziara
+        [left] { $point } puntuaren ezkerretara { $rho } distantziara
+        [right] { $point } puntuaren eskuinetara { $rho } distantziara
+       *[other] { $point } puntutik { $rho } distantziara, { $an } azelerazioaren norabidean
+    }
 curvature-intrinsic = { $speed } izanik, ukitzaile unitarioa { $tangent } da; { $split }, { $tangential } izanik, eta { $rest }, { $normal }:
 sec-answers = Erantzunak
 answers-none = Ereduak ez du galderarik egiten.
@@ -461,6 +469,7 @@ ans-point = posizioa
 ans-from = { $point } puntura dagoen distantzia
 ans-direction = norabidea
 ans-center = kurbadura-zentroa
+ans-center_from = kurbadura-zentroa { $where }
 ans-tangent = ukitzaile unitarioa
 ans-slide = ardatzaren norabideko abiadura
 ans-translation = translazio bat: ez dago inflexio-zirkunferentziarik
