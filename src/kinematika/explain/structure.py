@@ -203,19 +203,41 @@ def _body_cell(ctx: Ctx, name: str):
     return Name(name, "body", bare=True)
 
 
-def _where(ctx: Ctx, j) -> Inline | str:
-    """The joint's point and, for a guide, its direction (evaluated: never the model's text)."""
+def _where(ctx: Ctx, j) -> Inline | Msg | str:
+    """The joint's point and, for a guide, its direction in a teacher's words (issue 30, round
+    29 c: never "J ∥ (1, 0)"): "J slides along a horizontal line", "the wheel at F rolls along
+    (1, 1), at 45° to the horizontal", "… along PO" (evaluated: never the model's text)."""
     parts: list = []
     if j.at:
         parts.append(point(j.at))
     elif rolls(j) and ctx.planar and ctx.sol.geometry(j.id).contact is not None:
         parts.append(point(ctx.contact(j)))          # the contact, as the text names it
+    if j.along is None:
+        return Inline(parts) if parts else "—"
     if isinstance(j.along, PointPair):
-        parts += [" ∥ " if parts else "∥ ", point(j.along.start), point(j.along.end)]
-    elif j.along is not None:
-        vec = ctx.clean(ctx.inst.vector(j.along, j.where), "")
-        parts += [" ∥ " if parts else "∥ ", Value(vec, "")]
-    return Inline(parts) if parts else "—"
+        towards: Any = msg("along.line", line=Inline([point(j.along.start), point(j.along.end)]))
+    else:
+        towards = along_words(ctx, ctx.clean(ctx.inst.vector(j.along, j.where), ""))
+    verb = "rolls" if knife_edge(j) else "slides"
+    return msg("along.joint", verb=verb, point=Inline(parts) if parts else "—", dir=towards)
+
+
+def along_words(ctx: Ctx, vec: tuple) -> Msg:
+    """A guide's direction as a teacher says it: a horizontal or a vertical line, or the
+    direction and its angle to the horizontal, (1, 1) at 45° (the angle when numbers give it)."""
+    import math
+
+    try:
+        x, y = (float(c) for c in vec)
+    except (TypeError, ValueError):
+        return msg("along.vector", vec=Value(vec, ""))
+    size = math.hypot(x, y) or 1.0
+    if abs(y) < 1e-9 * size:
+        return msg("along.horizontal")
+    if abs(x) < 1e-9 * size:
+        return msg("along.vertical")
+    deg = math.degrees(math.atan2(y, x)) % 180.0
+    return msg("along.angle", vec=Value(vec, ""), deg=Value(round(deg, 1) if abs(deg - round(deg)) > 1e-6 else int(round(deg)), ""))
 
 
 # inches: an explanation's drawing is set at its own size, 432 pt, under the 482 pt of an A4 page's

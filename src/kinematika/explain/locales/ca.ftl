@@ -132,13 +132,22 @@ shape-plane = pla
 joint-revolute = articulació (R)
 joint-prismatic = prismàtic (P)
 joint-slot = passador en ranura
-joint-slot_fixed = contacte amb lliscament (un punt sobre una recta fixa)
+joint-slot_fixed = contacte amb lliscament sobre una recta fixa
 joint-wheel = roda (sense lliscament lateral)
 joint-rolling = rodolament
 joint-gear = engranatge
 joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
+along-joint = { WORD($verb) ->
+        [rolls] la roda a { $point } rodola segons { $dir }
+       *[slides] { $point } llisca segons { $dir }
+    }
+along-horizontal = una recta horitzontal
+along-vertical = una recta vertical
+along-angle = { $vec }, a { $deg }° de l’horitzontal
+along-vector = { $vec }
+along-line = { $line }
 fig-arrow-velocity = la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }

@@ -99,13 +99,22 @@ shape-plane = plane
 joint-revolute = revolute (R)
 joint-prismatic = prismatic (P)
 joint-slot = pin in slot
-joint-slot_fixed = sliding contact (a point on a fixed line)
+joint-slot_fixed = sliding contact on a fixed line
 joint-wheel = wheel (knife edge)
 joint-rolling = rolling
 joint-gear = gear
 joint-weld = rigid joint
 joint-spherical = spherical
 joint-cylindrical = cylindrical
+along-joint = { WORD($verb) ->
+        [rolls] the wheel at { $point } rolls along { $dir }
+       *[slides] { $point } slides along { $dir }
+    }
+along-horizontal = a horizontal line
+along-vertical = a vertical line
+along-angle = { $vec }, at { $deg }° to the horizontal
+along-vector = { $vec }
+along-line = { $line }
 fig-arrow-velocity = the velocity of { $point }
 fig-arrow-drag = the drag velocity ({ $sym })
 fig-arrow-relative = the relative velocity ({ $sym })

@@ -105,13 +105,22 @@ shape-plane = plano
 joint-revolute = par de rotación (R)
 joint-prismatic = par prismático (P)
 joint-slot = pasador en ranura
-joint-slot_fixed = contacto con deslizamiento (un punto sobre una recta fija)
+joint-slot_fixed = contacto con deslizamiento sobre una recta fija
 joint-wheel = rueda (sin deslizamiento lateral)
 joint-rolling = rodadura
 joint-gear = engranaje
 joint-weld = sólidos solidarios
 joint-spherical = par esférico
 joint-cylindrical = par cilíndrico
+along-joint = { WORD($verb) ->
+        [rolls] la rueda en { $point } rueda a lo largo de { $dir }
+       *[slides] { $point } desliza a lo largo de { $dir }
+    }
+along-horizontal = una recta horizontal
+along-vertical = una recta vertical
+along-angle = { $vec }, a { $deg }° de la horizontal
+along-vector = { $vec }
+along-line = { $line }
 fig-arrow-velocity = la velocidad de { $point }
 fig-arrow-drag = la velocidad de arrastre ({ $sym })
 fig-arrow-relative = la velocidad relativa ({ $sym })

@@ -99,13 +99,22 @@ shape-plane = planoa
 joint-revolute = giltzadura (R)
 joint-prismatic = prismatikoa (P)
 joint-slot = ziria arteka batean
-joint-slot_fixed = irristadurazko kontaktua (puntu bat zuzen finko batean)
+joint-slot_fixed = zuzen finko bateko irristadurazko kontaktua
 joint-wheel = gurpila (alboko irristarik gabe)
 joint-rolling = errodadura
 joint-gear = engranajea
 joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
+along-joint = { WORD($verb) ->
+        [rolls] { $point } puntuko gurpila errodatu egiten da; norabidea: { $dir }
+       *[slides] { $point } puntua irristatu egiten da; norabidea: { $dir }
+    }
+along-horizontal = horizontala
+along-vertical = bertikala
+along-angle = { $vec }, horizontalarekiko { $deg }°
+along-vector = { $vec }
+along-line = { $line }
 fig-arrow-velocity = { $point } puntuaren abiadura
 fig-arrow-drag = arrastre-abiadura ({ $sym })
 fig-arrow-relative = abiadura erlatiboa ({ $sym })
