@@ -218,8 +218,8 @@ def _where(ctx: Ctx, j) -> Inline | Msg | str:
         towards: Any = msg("along.line", line=Inline([point(j.along.start), point(j.along.end)]))
     else:
         towards = along_words(ctx, ctx.clean(ctx.inst.vector(j.along, j.where), ""))
-    verb = "rolls" if knife_edge(j) else "slides"
-    return msg("along.joint", verb=verb, point=Inline(parts) if parts else "—", dir=towards)
+    verb = "rolls" if knife_edge(j) else "slides" if parts else "only"     # a block's guide: no point
+    return msg("along.joint", verb=verb, point=Inline(parts), dir=towards)
 
 
 def along_words(ctx: Ctx, vec: tuple) -> Msg:

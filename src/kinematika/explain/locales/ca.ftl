@@ -140,6 +140,7 @@ joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
 along-joint = { WORD($verb) ->
+        [only] segons { $dir }
         [rolls] la roda a { $point } rodola segons { $dir }
        *[slides] { $point } llisca segons { $dir }
     }

@@ -107,6 +107,7 @@ joint-weld = rigid joint
 joint-spherical = spherical
 joint-cylindrical = cylindrical
 along-joint = { WORD($verb) ->
+        [only] along { $dir }
         [rolls] the wheel at { $point } rolls along { $dir }
        *[slides] { $point } slides along { $dir }
     }

@@ -113,6 +113,7 @@ joint-weld = sólidos solidarios
 joint-spherical = par esférico
 joint-cylindrical = par cilíndrico
 along-joint = { WORD($verb) ->
+        [only] a lo largo de { $dir }
         [rolls] la rueda en { $point } rueda a lo largo de { $dir }
        *[slides] { $point } desliza a lo largo de { $dir }
     }

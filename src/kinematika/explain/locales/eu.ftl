@@ -107,6 +107,7 @@ joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
 along-joint = { WORD($verb) ->
+        [only] norabidea: { $dir }
         [rolls] { $point } puntuko gurpila errodatu egiten da; norabidea: { $dir }
        *[slides] { $point } puntua irristatu egiten da; norabidea: { $dir }
     }
