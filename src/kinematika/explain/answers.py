@@ -109,7 +109,7 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
         return [("", msg("ans.rest"))]
     if value.get("translation"):
         return [("", msg("ans.translation"))]
-    out = []
+    out: list[tuple[Any, Any]] = []
     for key, v in value.items():
         if key in QUESTIONS[q.kind].working:        # derived in a step before (`intrinsic_lines`)
             continue

@@ -237,7 +237,7 @@ def along_words(ctx: Ctx, vec: tuple) -> Msg:
     if abs(x) < 1e-9 * size:
         return msg("along.vertical")
     deg = math.degrees(math.atan2(y, x)) % 180.0
-    return msg("along.angle", vec=Value(vec, ""), deg=Value(round(deg, 1) if abs(deg - round(deg)) > 1e-6 else int(round(deg)), ""))
+    return msg("along.angle", vec=Value(vec, ""), deg=Value(round(deg, 1) if abs(deg - round(deg)) > 1e-6 else round(deg), ""))
 
 
 # inches: an explanation's drawing is set at its own size, 432 pt, under the 482 pt of an A4 page's
@@ -492,22 +492,20 @@ def mechanism_figure(ctx: Ctx) -> Figure:
     return fig
 
 
-def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
+def values_table(ctx: Ctx, accelerations: bool = True, runs: frozenset = frozenset(),
+                 ground: bool = False) -> Table:
     """ω (and α, when accelerations are explained) of every moving body, the solver's values:
-    every body whose rate a step finds is listed, but a belt's or chain's run, to which the
-    notes give no rate (issue 30, round 29 c; round 20g had listed it); a fixed pulley a drive
-    wraps is listed with its 0, which the drive's step uses (ω_pulley1 = 0)."""
+    every body whose rate a step finds is listed, but the `runs` of belts and chains, to which
+    the notes give no rate (issue 30, round 29 c; round 20g had listed them); the ground, when
+    a drive wraps it (`ground`), with its 0, which the drive's step uses (ω_pulley1 = 0)."""
     def value(x, unit: str) -> Value:
         return Value(ctx.clean(x if ctx.planar else tuple(x), unit), unit)
 
-    from .drives import drives
-
-    runs = {d.line for d in drives(ctx)}
-    # the ground, when a drive wraps it (C5-1.6's fixed pulley, whose 0 the step uses)
-    ground = [ctx.frame] if any(ctx.frame in (d.a, d.b) for d in drives(ctx)) else []
+    # the ground first when a drive wraps it (`ground`: C5-1.6's fixed pulley, whose 0 the step uses)
+    listed = ([ctx.frame] if ground else []) + list(ctx.model.moving_bodies)
     rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
-            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ground + list(ctx.model.moving_bodies)
-            if b == ctx.frame or not ctx.fixed(b) and b not in runs]   # a weld to the frame: part of it
+            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in listed
+            if b == ctx.frame or (not ctx.fixed(b) and b not in runs)]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)
 
 def _named_ground(ctx: Ctx, name: str) -> bool:
