@@ -730,7 +730,7 @@ curvature-from = { WORD($side) ->
        *[other] a { $rho } { ELISION($point) ->
             [vowel] d’{ $point }
            *[other] de { $point }
-        }, en la direcció de la seva acceleració normal
+        }, en la direcció d’{ $an }
     }
 curvature-intrinsic = Amb { $speed }, la tangent unitària és { $tangent }; { $split }, amb { $tangential }, i { $rest }, { $normal }:
 sec-answers = Respostes
@@ -1285,15 +1285,6 @@ check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
     }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades a «{ sec-velocities }», { $values }: coincideixen.
-        [vowel] d’{ $line }
-       *[other] de { $line }
-    } es trasllada)
-        [vowel] d’{ $line }
-       *[other] de { $line }
-    } es trasllada respecte { ELISION($body) ->
-        [vowel] d’{ $body }
-       *[other] de { $body }
-    })
 pair-relation_v = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
