@@ -709,7 +709,7 @@ curvature-centre_from = El centre de curvatura de la trajectòria { ELISION($poi
         [vowel] d’{ $point }
        *[other] de { $point }
     } és { $where }.
-curvature-named = Amb { $d } = { $arm } = { $length }, la distància del CIR trobada abans, { $rho } = { $value }.
+curvature-named = Amb { $d } = { $arm } = { $length }, { $rho } = { $value }.
 curvature-from = { WORD($side) ->
         [up] a { $rho } per sobre { ELISION($point) ->
             [vowel] d’{ $point }

@@ -532,7 +532,7 @@ curvature-circle = Point { $point }: it keeps its distance from the fixed point 
 curvature-circle_centre = The centre of curvature of the path of { $point } is { $o }, at { $centre }.
 curvature-centre = The centre of curvature of the path of { $point } is at { $centre }, on the side of the normal acceleration.
 curvature-centre_from = The centre of curvature of the path of { $point } is { $where }.
-curvature-named = With { $d } = { $arm } = { $length }, the distance of the instant centre found above, { $rho } = { $value }.
+curvature-named = With { $d } = { $arm } = { $length }, { $rho } = { $value }.
 curvature-from = { WORD($side) ->
         [up] { $rho } above { $point }
         [down] { $rho } below { $point }

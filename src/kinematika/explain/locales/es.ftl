@@ -504,7 +504,7 @@ curvature-circle = Punto { $point }: mantiene la distancia al punto fijo { $o },
 curvature-circle_centre = El centro de curvatura de la trayectoria de { $point } es { $o }, en { $centre }.
 curvature-centre = El centro de curvatura de la trayectoria de { $point } está en { $centre }, del lado de la aceleración normal.
 curvature-centre_from = El centro de curvatura de la trayectoria de { $point } está { $where }.
-curvature-named = Con { $d } = { $arm } = { $length }, la distancia del CIR hallada antes, { $rho } = { $value }.
+curvature-named = Con { $d } = { $arm } = { $length }, { $rho } = { $value }.
 curvature-from = { WORD($side) ->
         [up] a { $rho } por encima de { $point }
         [down] a { $rho } por debajo de { $point }

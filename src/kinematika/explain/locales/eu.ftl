@@ -454,7 +454,7 @@ curvature-circle = { $point } puntua: { $o } puntu finkoarekiko distantzia mante
 curvature-circle_centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $o } puntua da, { $centre } posizioan.
 curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
 curvature-centre_from = { $point } puntuaren ibilbidearen kurbadura-zentroa { $where } dago.
-curvature-named = Lehen aurkitutako biraketa-zentro instantaneoaren distantzia { $d } = { $arm } = { $length } izanik, { $rho } = { $value }.
+curvature-named = { $d } = { $arm } = { $length } izanik, { $rho } = { $value }.
 curvature-from = { WORD($side) ->
         [up] { $point } puntuaren gainetik { $rho } distantziara
         [down] { $point } puntuaren azpitik { $rho } distantziara
