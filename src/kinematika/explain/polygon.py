@@ -402,17 +402,21 @@ class _Builder:
         for i, b in enumerate(self.arrows):
             if _close(a.start, b.start, self.size) and _close(a.end, b.end, self.size):
                 if a.style == "result" and b.style != "result" and not self.single:
-                    self.arrows[i] = Arrow(a.start, a.end, a.label if a.label is not None else _read(b.label), a.style)
+                    self.arrows[i] = Arrow(a.start, a.end, a.label if a.label is not None else self._read(b.label), a.style)
                 elif b.style == "result" and a.style != "result" and b.label is None and not self.single:
-                    self.arrows[i] = Arrow(b.start, b.end, _read(a.label), b.style)
+                    self.arrows[i] = Arrow(b.start, b.end, self._read(a.label), b.style)
                 return
         self.arrows.append(a)
 
 
-def _read(label: Any) -> Any:
-    """A term's label kept on the blue arrow it shares: none for a term about an instant centre
-    placed as a point (C5-1.1's v_{CI_pulley}, the arm to the centre the image already letters)."""
-    return None if label is None or CENTRE_POINT_RE.search(str(label.sub)) else label
+    def _read(self, label: Any) -> Any:
+        """A term's label kept on the blue arrow it shares: a relative term between two points
+        (v_BE, v_AO1); none for a point's own term (C5-E.4's a_A1^t, a wheel's centre, whose
+        arrow the caption names by the point's motion) or a term about an instant centre placed
+        as a point (C5-1.1's v_{CI_pulley})."""
+        if label is None or CENTRE_POINT_RE.search(str(label.sub)) or str(label.sub) in self.ctx.model.points:
+            return None
+        return label
 
 
 RIGID = ("rotation", "normal", "tangential")     # the kinds of a rigid body's terms about a point of it
