@@ -318,7 +318,7 @@ def named_length(ctx: Ctx, label: str, radius: Any) -> list:
     if best is None:
         return []
     new, q, body, dist = best
-    return [msg("curvature.named", rho=Sym("ℜ", label, vector=False), d=Name("d"),
+    return [msg("curvature.named", rho=Sym("ℜ", label, vector=False), d=Name("d", "param"),
                 arm=Inline([Name(q), Sym("I", body, vector=False)]), length=Value(ctx.clean(dist, "len"), "len"),
                 value=Value(new, "len"))]
 
