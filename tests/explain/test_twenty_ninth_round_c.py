@@ -100,7 +100,7 @@ def test_c3_the_bicycle_curvature_as_the_notes_write_it(lang: str) -> None:
     page = plain_page("seed_c5_e6_bicycle", lang)
     assert ABOVE[lang] in page
     assert f"(b, {WHEEL[lang]} + r +" not in page and f"(b; {WHEEL[lang]} + r +" not in page
-    assert f"d = CI_{{{CHAINRING[lang]}}} = R·{WHEEL[lang]}/r" in page
+    assert f"*d* = CI_{{{CHAINRING[lang]}}} = R·{WHEEL[lang]}/r" in page      # d a parameter (italic)
     assert "ℜ_P = (d − L)²/L." in page
 
 
