@@ -11,7 +11,8 @@ import pytest
 from .helpers import LANGS, SEEDS, rendered, over
 
 # a_{P∈b rel a} = −a_{P∈a rel b} = (…): the derivation by reversal, in any language
-REVERSE = re.compile(r"^(a_\{(\S+)∈(\S+) (?:rel\.?) (\S+)\}) = −a_\{\2∈\4 (?:rel\.?) \3\} = .*$", re.M)
+# round 29 c: the sentence may lead with its reason ("No slip: v_rel = 0, so … a_{F∈R rel N} = −a_{F∈N rel R} = …")
+REVERSE = re.compile(r"^.*?(a_\{(\S+)∈(\S+) (?:rel\.?) (\S+)\}) = −a_\{\2∈\4 (?:rel\.?) \3\} = .*$", re.M)
 
 
 @over(name=SEEDS, lang=LANGS)

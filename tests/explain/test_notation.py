@@ -67,10 +67,10 @@ def test_belt_composition_runs_relative_plus_drag(lang, absolute, relative, drag
 
 
 @pytest.mark.parametrize("name,run", [("seed_c5_1_6_belt", "belt"), ("seed_c5_e6_bicycle", "chain")])
-def test_a_belt_run_is_listed_with_its_carrier_rate(name, run):
-    """A belt's or chain's straight run is carried by the arm (frame) that holds the axles:
-    it translates relative to it, so its ω is the carrier's, which the step says; the table of
-    rates lists it (twentieth round g: every body whose ω a step finds is in the table)."""
+def test_a_belt_run_is_not_in_the_rates_table(name, run):
+    """A belt's or chain's straight run is carried by the arm (frame) that holds the axles; the
+    notes give it no rate, and the table of rates does not list it (round 29 c, reversing
+    twentieth round g's listing)."""
     from kinematika.explain.document import Name, Table
 
     _, doc = explained(name)
@@ -78,7 +78,7 @@ def test_a_belt_run_is_listed_with_its_carrier_rate(name, run):
              and getattr(b.header[1], "key", "") == "col.omega"]
     assert rates
     listed = {c.text for t in rates for row in t.rows for c in row[:1] if isinstance(c, Name)}
-    assert run in listed
+    assert run not in listed
 
 
 def test_unequal_wheels_as_the_notes_write_them():

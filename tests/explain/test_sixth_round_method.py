@@ -34,19 +34,21 @@ ROLLING_CENTRES = ("seed_c5_e4_upper_wheel", "seed_c5_e5_unequal_wheels", "seed_
 
 @over(name=ROLLING_CENTRES)
 def test_a_rolling_centre_alone_is_alpha_times_its_radius(name):
-    """A wheel's centre found alone on its straight path is a_C = α × JC (the notes' v_C = Ω × JC,
-    differentiated): the one term is written by its formula with α named, never a_C = a_CJ^t,
-    which reads as if the contact's acceleration were zero (it is not: only v_J = 0)."""
+    """A wheel's centre found alone on its straight path is its own tangential acceleration,
+    a_C = a_C^t, of magnitude α·JC (round 29 c: term by term, as C5-1.7 writes a_C = a_C^t + a_C^n;
+    this round had written the product α × JC as the term), never a_C = a_CJ^t, which reads as
+    if the contact's acceleration were zero (it is not: only v_J = 0)."""
     _, doc = explained(name)
     alone = [e for e in _blocks(_section(doc, "sec.accelerations")) if isinstance(e, Equation)
              and len(e.sides) == 1 and len(e.sides[0]) == 1 and e.sides[0][0].kind == "tangential"]
     assert alone, name
     for e in alone:
         t = e.sides[0][0]
-        assert t.spelt and t.how[0].base == "α" and (t.sym.sub, t.sym.sup) == (e.target.sym.sub, ""), e.target.sym
+        assert not t.spelt and t.how[0].base == "α" and (t.sym.sub, t.sym.sup) == (e.target.sym.sub, "t"), e.target.sym
     for lang in LANGS:
         page = rendered(name, lang, drawings=False)
-        assert not re.search(r"^a_\S+\s+=\s+a_\{?[^ }]+\}?\^t\s*$", page, re.M), (name, lang)
+        for m in re.finditer(r"^a_(\S+)\s+=\s+a_\{?([^ }^]+)\}?\^[tT]\s*$", page, re.M):
+            assert m.group(1) == m.group(2), (name, lang, m.group(0))
 
 
 def test_the_bicycle_rear_hub_by_hand():
@@ -65,8 +67,9 @@ def test_the_bicycle_rear_hub_by_hand():
     r = _sym(sympy.sympify(alpha), "R_roda")
     assert sympy.simplify(alpha + vd / r) == 0
     page = rendered("seed_c5_e6_bicycle", "eu", drawings=False)
-    assert re.search(r"^a_H\s+=\s+α_gurpila1 × G-?H\s*$", page, re.M)       # gurpila1: 27th round (g)
-    assert re.search(r"G-?H = \(0; R_gurpila\); x norabidean: a_H = −α_gurpila1·R_gurpila ⇒ α_gurpila1 = −v̇/R_gurpila", page)
+    assert re.search(r"^a_H\s+=\s+a_H\^T\s*$", page, re.M)       # round 29 c: term by term
+    assert "a_H^T = α_gurpila1 × GH = (v̇; 0)" in page            # gurpila1: 27th round (g)
+    assert re.search(r"G-?H = \(0; R_gurpila\); x norabidean: a_H\^T = −α_gurpila1·R_gurpila ⇒ α_gurpila1 = −v̇/R_gurpila", page)
 
 
 # -- 001's rolling pair: the contact section refers to what step 3 wrote ----------------------------------------------

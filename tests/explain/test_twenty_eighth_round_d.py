@@ -244,15 +244,15 @@ NO_CORIOLIS = {"en": "there is no Coriolis term, since at a rolling contact the 
 
 @over(name=SEEDS, lang=LANGS)
 def test_d7_the_relative_accelerations_sum(name: str, lang: str) -> None:
-    """a_{F∈R rel N} + a_{F∈N rel R} = 2 (ω_R − ω_N) × v_{F∈R rel N} is a sum: the words say so
-    (001_rolling_pair); and wherever a rolling contact's sentence stands, it gives v_rel = 0."""
+    """The relative accelerations are never said to "differ by" the Coriolis terms (001_rolling_pair;
+    since round 29 c their general sum is not written at a rolling contact at all); and wherever a rolling contact's sentence stands, it gives v_rel = 0."""
     page = plain_page(name, lang)
     assert not [w for w in DIFFER if w in page]
     for line in page.splitlines():
         if NO_CORIOLIS[lang] in line:
             assert re.search(re.escape(NO_CORIOLIS[lang]) + r"v_\{\w+∈\w+ rel \w+\} = 0\.", line), line
-    if name == "seed_001_rolling_pair":
-        assert SUM[lang] + "2 (ω_R − ω_N) × v_{F∈R rel N}" in page
+    if name == "seed_001_rolling_pair":     # round 29 c: the general sum is beyond the course when v_rel = 0
+        assert SUM[lang] not in page and "2 (ω_R − ω_N) × v_{F∈R rel N}" not in page
 
 
 @over(name=("seed_001_rolling_pair",), lang=LANGS)

@@ -198,7 +198,7 @@ def test_the_basque_wording_by_hand() -> None:
     assert "puntuko puntuaren" not in p_pair
     rolling = plain_page("seed_001_rolling_pair", "eu")
     assert "Beraz, 2. urratsean α_N eta a_{A∈R rel N} aurkitzeko erabilitako ekuazioa a_A = " in rolling
-    assert "Oro har, bi azelerazio erlatiboak ez dira aurkakoak: haien batura bi Coriolisen terminoen baturaren aurkakoa da" in rolling
+    assert "Irristadurarik ez: v_{F∈R rel N} = 0; beraz, ez dago Coriolisen terminorik" in rolling     # round 29 c
     assert "*Txasisaren* biraketa-zentro instantaneoa bi zuzen hauetan dago" in plain_page("seed_c5_2_1_tricycle", "eu")
     assert "*S2 txasisaren* biraketa-zentro instantaneoa bi zuzen hauetan dago" in plain_page("seed_c5_2_2_articulated", "eu")
     assert "*OQ elementua* *lurrari* O puntuan giltzatuta dago;" in plain_page("seed_c5_1_3_bar_in_sleeve", "eu")

@@ -83,12 +83,12 @@ def test_d_the_bicycle_rear_wheel_by_hand() -> None:
     its centre F moves as H, R_wheel above its contact."""
     pages = {lang: rendered("seed_c5_e6_bicycle", lang, drawings=False) for lang in LANGS}
     # the rear wheel is wheel 1 and the front wheel 2 of the page's notation line (27th round (g))
-    assert "GH = (0, R_wheel); along x: a_H = −α_wheel1·R_wheel ⇒ α_wheel1 = −v̇/R_wheel" in pages["en"]
+    assert "GH = (0, R_wheel); along x: a_H^t = −α_wheel1·R_wheel ⇒ α_wheel1 = −v̇/R_wheel" in pages["en"]
     assert "GH = (0, R_wheel); along x: v_HG = −ω_wheel1·R_wheel ⇒ ω_wheel1 = −v/R_wheel" in pages["en"]
-    assert "JF = (0, R_wheel); along x: a_F = −α_wheel2·R_wheel ⇒ α_wheel2 = −v̇/R_wheel" in pages["en"]    # its own equation (round 27b)
-    assert "GH = (0; R_roda); segons x: a_H = −α_roda1·R_roda ⇒ α_roda1 = −v̇/R_roda" in pages["ca"]
-    assert "GH = (0; R_rueda); según x: a_H = −α_rueda1·R_rueda ⇒ α_rueda1 = −v̇/R_rueda" in pages["es"]
-    assert "GH = (0; R_gurpila); x norabidean: a_H = −α_gurpila1·R_gurpila ⇒ α_gurpila1 = −v̇/R_gurpila" in pages["eu"]
+    assert "JF = (0, R_wheel); along x: a_F^t = −α_wheel2·R_wheel ⇒ α_wheel2 = −v̇/R_wheel" in pages["en"]    # its own equation (round 27b)
+    assert "GH = (0; R_roda); segons x: a_H^t = −α_roda1·R_roda ⇒ α_roda1 = −v̇/R_roda" in pages["ca"]
+    assert "GH = (0; R_rueda); según x: a_H^t = −α_rueda1·R_rueda ⇒ α_rueda1 = −v̇/R_rueda" in pages["es"]
+    assert "GH = (0; R_gurpila); x norabidean: a_H^T = −α_gurpila1·R_gurpila ⇒ α_gurpila1 = −v̇/R_gurpila" in pages["eu"]
     for page in pages.values():
         assert "|a_H|" not in page and "|v_HG|" not in page
 

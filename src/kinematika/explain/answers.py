@@ -110,10 +110,16 @@ def answer_items(ctx: Ctx, q, value: Any) -> list:
         return [("", msg("ans.rest"))]
     if value.get("translation"):
         return [("", msg("ans.translation"))]
-    out = []
+    out: list[tuple[Any, Any]] = []
     for key, v in value.items():
         if key in QUESTIONS[q.kind].working:        # derived in a step before (`intrinsic_lines`)
             continue
+        if key == "center" and isinstance(getattr(q, "target", None), PointRef):
+            label = ctx.point_label(q.target.point, q.target.body)
+            where = centre_from(ctx, q.target, label, value)
+            if where is not None:           # said from its point, as the curvature section says it
+                out.append(("", msg("ans.center_from", where=where)))
+                continue
         if isinstance(v, dict):
             for sub, w in v.items():
                 out.append((_part_label(ctx, q, key, sub), _value(ctx, w, UNITS.get(sub) or UNITS[key] or "")))
@@ -253,8 +259,81 @@ def curvature_steps(ctx: Ctx, q) -> list:
     radius = Value(ctx.clean(result["radius"], "len"), "len")
     out.append(Derived(Sym("ℜ", label, vector=False), ["|", Sym("v", label), "|² / |", Sym("a", label, "n"), "|"],
                        radius, kind="radius", source=normal, arm=ctx.clean(v, "speed")))
-    out.append(msg("curvature.centre", point=Name(label), centre=Value(ctx.clean(result["center"], "len"), "len")))
+    out += named_length(ctx, label, result["radius"])
+    where = centre_from(ctx, ref, label, result)
+    if where is not None:
+        out.append(msg("curvature.centre_from", point=Name(label), where=where))
+    else:
+        out.append(msg("curvature.centre", point=Name(label), centre=Value(ctx.clean(result["center"], "len"), "len")))
     return out
+
+
+def named_length(ctx: Ctx, label: str, radius: Any) -> list:
+    """A symbolic radius of curvature written again with a length the page has found before,
+    when that shortens it: an instant centre's distance from its point (C5-E.6: the pedals'
+    centre d = CI_chainring = R·R_roda/r below C gives ℜ_P = (d − L)²/L, the notes' form, for
+    (R·R_roda − L·r)²/(L·r²)). The length is called d, as the notes call it, unless the model
+    has a d of its own; none when no found length shortens the radius by a few operations."""
+    import sympy
+
+    from .centres import _notes
+
+    if not ctx.symbolic or not ctx.planar:
+        return []
+    d = sympy.Symbol("d", positive=True)
+    if "d" in ctx.model.parameters or "d" in {str(x) for x in sympy.sympify(radius).free_symbols}:
+        return []
+    shown = sympy.sympify(ctx.clean(radius, "len"))
+    best = None
+    for note in _notes(ctx)[0].values():
+        if note.how not in ("field", "rate") or note.distance is None or not note.witnesses:
+            continue
+        dist = sympy.simplify(sympy.sympify(note.distance))
+        if dist.is_number or "d" in {str(x) for x in dist.free_symbols}:
+            continue
+        for x in sorted(dist.free_symbols, key=str):
+            sol = sympy.solve(sympy.Eq(dist, d), x)
+            if len(sol) != 1:
+                continue
+            new = sympy.factor(sympy.simplify(shown.subs(x, sol[0])))
+            if x in new.free_symbols or sympy.count_ops(new) > sympy.count_ops(shown) - 3:
+                continue
+            if best is None or sympy.count_ops(new) < sympy.count_ops(best[0]):
+                body = next(b for b in note.pair if b != ctx.frame)
+                best = (new, note.witnesses[-1][0], body, dist)
+    if best is None:
+        return []
+    new, q, body, dist = best
+    return [msg("curvature.named", rho=Sym("ℜ", label, vector=False), d=Name("d", "param"),
+                arm=Inline([Name(q), Sym("I", body, vector=False)]), length=Value(ctx.clean(dist, "len"), "len"),
+                value=Value(new, "len"))]
+
+
+# a symbolic centre of curvature whose coordinates take more operations than this is said
+# from its point ("ℜ_P above P"), not by its coordinates (C5-E.6's (b; R_roda + r + … − R))
+LONG_CENTRE = 8
+
+
+def centre_from(ctx: Ctx, ref: PointRef, label: str, result: dict) -> Msg | None:
+    """Where a symbolic centre of curvature is, said from its point along the normal — "at ℜ_P
+    above P" — when its coordinates are past reading (issue 30, round 29 c: C5-E.6's
+    "(b; R_roda + r + (R·R_roda − L·r)²/(L·r²) − L − R)"); None when they are short, or the
+    model is numeric, which the coordinates then say best."""
+    import sympy
+
+    centre = result.get("center")
+    if not ctx.symbolic or centre is None or result.get("radius") is None:
+        return None
+    shown = ctx.clean(centre, "len")
+    if sum(sympy.count_ops(sympy.sympify(c)) for c in shown) <= LONG_CENTRE:
+        return None
+    at = ctx.pos(ref.point)
+    dx, dy = (float(ctx.num(c)) - float(ctx.num(p)) for c, p in zip(centre, at))
+    size = max(abs(dx), abs(dy)) or 1.0
+    side = ("up" if dy > 0 else "down") if abs(dx) < 1e-9 * size else \
+        ("right" if dx > 0 else "left") if abs(dy) < 1e-9 * size else "other"
+    return msg("curvature.from", side=side, rho=Sym("ℜ", label, vector=False), point=Name(label),
+               an=Sym("a", label, "n"))
 
 
 def circle_steps(ctx: Ctx, label: str, origin: str, result: dict) -> list:

@@ -20,6 +20,7 @@ from .centres import centre_sites, centres_first, centres_in_steps, centres_sect
 from .found_first import centres_after_found
 from .context import Ctx, omega_sym, point_labels
 from .data import contact_rows, data_section
+from .drives import drives
 from .strands import strand_words
 from .document import Ann, CentreNote, Derived, Document, Equation, Inline, Msg, Name, Names, Section, Sym, Term, Value, msg
 from .group import refine
@@ -77,7 +78,9 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
             doc.sections.append(sec)
         reorder(ctx, structure, steps)       # the order as the velocity steps found the bodies
         summary = Section(msg("sec.rates_summary" if accel else "sec.rates_summary_v"))
-        summary.add(values_table(ctx, accel))
+        wraps = drives(ctx)                # a belt's run gets no rate; a fixed pulley it wraps, its 0
+        summary.add(values_table(ctx, accel, frozenset(d.line for d in wraps),
+                                 any(ctx.frame in (d.a, d.b) for d in wraps)))
         summary.blocks += relative_rates(ctx)
         doc.sections.append(summary)
         contacts = contact_section(ctx, _written_points(levels, wanted))
@@ -412,8 +415,9 @@ def refer_reverses(ctx: Ctx, doc: Document, levels: list[Section]) -> None:
                 key = "composition.reverse"
                 extra: dict[str, Any] = {"kind": unit}          # the quantity, never "motion"
                 if unit == "accel" and _at_rest(ctx, m.group(1), m.group(2), m.group(3)):
-                    key, extra = "composition.reverse_rolling", {"kind": unit, "vel": Sym("v", t.sym.sub),
-                                                                 "wb": omega_sym(m.group(2)), "wa": omega_sym(m.group(3))}
+                    # no slip: v_rel = 0, no Coriolis term, hence the reverse (never the
+                    # general 2 (ω_b − ω_a) × v_rel, beyond the course: issue 30, round 29 c)
+                    key, extra = "composition.reverse_rolling", {"kind": unit, "vel": Sym("v", t.sym.sub)}
                 _insert_before(sec, eq, msg(key, sym=t.sym, back=rev[0].sym,
                                             value=Value(t.value, unit), step=rev[1], **extra))
 

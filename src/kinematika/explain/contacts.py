@@ -150,9 +150,7 @@ class Bar:
         if self.c2 is not None and with_bar and level == "a" and self.constant():
             # the notes: α_OC = 0 because ω_OC = −ω0/3 is constant (C5-1.8), not read off a_C
             out.append(Derived(self.alpha_sym, [], Value(ctx.clean(self.alpha, "rate2"), "rate2"), "", "alpha", False,
-                               remark=msg("how.constant_rate", sym=self.sym,
-                                          value=Value(ctx.clean(self.omega, "rate"), "rate"),
-                                          line=Name(str(segment(self.c1, self.c2))), rates=self.steady_rates())))
+                               remark=self.constant_reason()))
         elif self.c2 is not None and with_bar:
             end = point_term(ctx, level, *self.second())
             turn = self.rotation(level, self.c1, self.c2, True)
@@ -185,6 +183,31 @@ class Bar:
         if not ctx.is_zero(self.alpha, "rate2"):
             return False
         return all(ctx.fixed(b) or _steady(ctx, b) for b in (self.b1, self.second()[1]))
+
+    def constant_reason(self) -> Msg:
+        """Why the bar's ω is constant, as the notes say it (C5-1.8): with one end on a fixed
+        body, the other runs on the circle of radius OC about it at a constant speed,
+        |v_C| = rω₀, so ω_OC = v_C / OC is constant; with both ends moving, the driven rates
+        that set it."""
+        import sympy
+
+        ctx = self.ctx
+        c2, b2 = self.second()
+        ends = [(self.c1, self.b1), (c2, b2)]
+        fixed = [e for e in ends if ctx.fixed(e[1])]
+        args = dict(sym=self.sym, value=Value(ctx.clean(self.omega, "rate"), "rate"),
+                    line=Name(str(segment(self.c1, c2))))
+        if len(fixed) != 1:
+            return msg("how.constant_rate", rates=self.steady_rates(), **args)
+        (centre, _), (point, body) = fixed[0], next(e for e in ends if e not in fixed)
+        v = ctx.vel(body, point)
+        speed = sympy.sqrt(sum(sympy.sympify(x) ** 2 for x in v))
+        speed = sympy.simplify(speed) if ctx.symbolic else float(speed)
+        d = sympy.sqrt(sum(sympy.sympify(x) ** 2 for x in ctx.r(centre, point)))
+        length = Value(ctx.clean(sympy.simplify(d) if ctx.symbolic else float(d), "len"), "len")
+        return msg("how.constant_speed", point=Name(point), centre=Name(centre), length=length,
+                   v=Sym("v", ctx.point_label(point, body), vector=False), speed=Value(ctx.clean(speed, "speed"), "speed"),
+                   **args)
 
     def steady_rates(self) -> Any:
         """The driven rates the bar's ω is set by (ω_wheel; "ω_1 and ω_2" when both turn)."""

@@ -258,15 +258,9 @@ def _relation(ctx: Ctx, d: Drive, a: str, b: str, level: str) -> list:
                        b if k is None else "", kind, sense))
     if k is not None:
         out.append(Derived(sym(b), [rel_b, " + ", sym(d.holder)], ctx.value(get(b), unit), b, kind, sense))
-    # the run translates with its holder: ω_run = ω_K, listed (round 20g); the sentence says it
-    # is the straight run that translates, not the belt (round 27b: a teacher names the part)
-    run = Name(d.line, "body")
-    if k is not None:
-        out.append(Derived(sym(d.line), [sym(d.holder), " ", msg("how.translates", body=Name(d.holder, "body"), line=run)],
-                           ctx.value(get(d.line), unit), d.line, kind, sense))
-    else:
-        out.append(Derived(sym(d.line), [msg("how.run_translates", line=run)], ctx.value(get(d.line), unit), d.line,
-                           kind, sense))
+    # the run's own rate is not written: the notes give a belt or a chain no angular velocity
+    # (its straight run translates with the carrier, and nothing asks it; issue 30, round 29 c —
+    # this replaces round 20g's ω_run = ω_K)
     return out
 
 

@@ -1009,11 +1009,14 @@ class Writer:
                     made = self.seg_terms(turn, p)
                     normal = self.path_terms(seg.joint, turn.body, turn.p, terms + self.seg_terms(seg, p) + made[:-1])
                     if not normal:              # a straight path: the term is a_C whole
-                        made[-1].sym = Sym(lv, ctx.point_label(turn.p, turn.body))
-                        ps.done.add(made[-1].sym.sub)
-                        # the centre alone: a_C = α × JC, as the notes write v_C = Ω × JC — never
-                        # a_C = a_CJ^t, which reads as if the contact had no acceleration
-                        made[-1].spelt = p.end == Site(turn.p, turn.body)
+                        label = ctx.point_label(turn.p, turn.body)
+                        # the centre alone: a_C = a_C^t (magnitude α·JC, ⊥ JC), as C5-1.7 writes
+                        # a_C = a_C^t + a_C^n — term by term, never a product α × JC as a term
+                        # (issue 30, round 29 c), nor a_C = a_CJ^t, which reads as if the
+                        # contact had no acceleration
+                        alone = p.end == Site(turn.p, turn.body)
+                        made[-1].sym = Sym(lv, label, "t" if alone else "")
+                        ps.done.add(label)
                     terms = self.path_tangential(made[-1], turn.body, turn.p, normal) + normal
                     skip = i + 1
                     if turn.body in p.finds:
@@ -1150,8 +1153,8 @@ class Writer:
                     point=point_name(name), vc=Sym("v", ctx.point_label(centre, body)), ac=Sym("a", centre),
                     vs=Sym("v", ctx.point_label(centre, body), vector=False),
                     w=omega_sym(body), al=alpha_sym(body), arm=point_name(str(segment(name, centre))))
-        if o is None:
-            return [msg("path.line", **args)]
+        if o is None:           # its acceleration is tangential alone: a_C = a_C^t = α × JC
+            return [msg("path.line", at=Sym("a", ctx.point_label(centre, body), "t"), **args)]
         step = getattr(ps, "found_in", {}).get(ctx.point_label(centre, body))
         if step is not None:                 # a_C found before (C5-E.1: on the arm OC, Step 1): referred to
             return [msg("path.found", o=point_name(o), radius=point_name(str(segment(o, centre))), step=step, **args)]

@@ -327,7 +327,10 @@ class _Builder:
                     self._image(term.sym.sub, end)
                     self._named(term.sym, end)
                     style = "known" if self.single and not term.unknown else "result"
-                    self._arrow(Arrow(origin, end, term.sym, style if self.single else "result"), label=self.single)
+                    # a side's first term in an equation of two sides (001 p_pair's v_{B∈M} =
+                    # v_E + v_BE): the student reads it there, beside its image b∈M
+                    self._arrow(Arrow(origin, end, term.sym, style if self.single else "result"),
+                                label=self.single or len(eq.sides) > 1)
                 else:
                     style = ("unknown" if term.unknown else "known") if self.single else "known"
                     self.terms.append(Arrow(tip, end, term.sym, style))
@@ -394,16 +397,30 @@ class _Builder:
 
     def _arrow(self, a: Arrow, label: bool = True) -> None:
         """Add an arrow once; a point's absolute motion wins over a term that is the same
-        arrow from the pole (v_AO2 when O2 is fixed): blue, named by its image."""
+        arrow from the pole (v_AO2 when O2 is fixed): blue, lettered by its image, and still
+        labelled with the term, which the equation writes and the student reads there
+        (issue 30, round 29 c: 001 p_pair's o→b∈N lost v_BE, the rocker's term)."""
         if a.label is not None:
             self.symbols.setdefault((a.start, a.end), a.label)
         a = a if label else Arrow(a.start, a.end, None, a.style)
         for i, b in enumerate(self.arrows):
             if _close(a.start, b.start, self.size) and _close(a.end, b.end, self.size):
                 if a.style == "result" and b.style != "result" and not self.single:
-                    self.arrows[i] = a
+                    self.arrows[i] = Arrow(a.start, a.end, a.label if a.label is not None else self._read(b.label), a.style)
+                elif b.style == "result" and a.style != "result" and b.label is None and not self.single:
+                    self.arrows[i] = Arrow(b.start, b.end, self._read(a.label), b.style)
                 return
         self.arrows.append(a)
+
+
+    def _read(self, label: Any) -> Any:
+        """A term's label kept on the blue arrow it shares: a relative term between two points
+        (v_BE, v_AO1); none for a point's own term (C5-E.4's a_A1^t, a wheel's centre, whose
+        arrow the caption names by the point's motion) or a term about an instant centre placed
+        as a point (C5-1.1's v_{CI_pulley})."""
+        if label is None or CENTRE_POINT_RE.search(str(label.sub)) or str(label.sub) in self.ctx.model.points:
+            return None
+        return label
 
 
 RIGID = ("rotation", "normal", "tangential")     # the kinds of a rigid body's terms about a point of it

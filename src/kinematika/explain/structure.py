@@ -203,19 +203,41 @@ def _body_cell(ctx: Ctx, name: str):
     return Name(name, "body", bare=True)
 
 
-def _where(ctx: Ctx, j) -> Inline | str:
-    """The joint's point and, for a guide, its direction (evaluated: never the model's text)."""
+def _where(ctx: Ctx, j) -> Inline | Msg | str:
+    """The joint's point and, for a guide, its direction in a teacher's words (issue 30, round
+    29 c: never "J ∥ (1, 0)"): "J slides along a horizontal line", "the wheel at F rolls along
+    (1, 1), at 45° to the horizontal", "… along PO" (evaluated: never the model's text)."""
     parts: list = []
     if j.at:
         parts.append(point(j.at))
     elif rolls(j) and ctx.planar and ctx.sol.geometry(j.id).contact is not None:
         parts.append(point(ctx.contact(j)))          # the contact, as the text names it
+    if j.along is None:
+        return Inline(parts) if parts else "—"
     if isinstance(j.along, PointPair):
-        parts += [" ∥ " if parts else "∥ ", point(j.along.start), point(j.along.end)]
-    elif j.along is not None:
-        vec = ctx.clean(ctx.inst.vector(j.along, j.where), "")
-        parts += [" ∥ " if parts else "∥ ", Value(vec, "")]
-    return Inline(parts) if parts else "—"
+        towards: Any = msg("along.line", line=Inline([point(j.along.start), point(j.along.end)]))
+    else:
+        towards = along_words(ctx, ctx.clean(ctx.inst.vector(j.along, j.where), ""))
+    verb = "rolls" if knife_edge(j) else "slides" if parts else "only"     # a block's guide: no point
+    return msg("along.joint", verb=verb, point=Inline(parts), dir=towards)
+
+
+def along_words(ctx: Ctx, vec: tuple) -> Msg:
+    """A guide's direction as a teacher says it: a horizontal or a vertical line, or the
+    direction and its angle to the horizontal, (1, 1) at 45° (the angle when numbers give it)."""
+    import math
+
+    try:
+        x, y = (float(c) for c in vec)
+    except (TypeError, ValueError):
+        return msg("along.vector", vec=Value(vec, ""))
+    size = math.hypot(x, y) or 1.0
+    if abs(y) < 1e-9 * size:
+        return msg("along.horizontal")
+    if abs(x) < 1e-9 * size:
+        return msg("along.vertical")
+    deg = math.degrees(math.atan2(y, x)) % 180.0
+    return msg("along.angle", vec=Value(vec, ""), deg=Value(round(deg, 1) if abs(deg - round(deg)) > 1e-6 else round(deg), ""))
 
 
 # inches: an explanation's drawing is set at its own size, 432 pt, under the 482 pt of an A4 page's
@@ -470,17 +492,20 @@ def mechanism_figure(ctx: Ctx) -> Figure:
     return fig
 
 
-def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
+def values_table(ctx: Ctx, accelerations: bool = True, runs: frozenset = frozenset(),
+                 ground: bool = False) -> Table:
     """ω (and α, when accelerations are explained) of every moving body, the solver's values:
-    every body whose rate a step finds is listed, a belt's or chain's run too (it translates
-    with the carrier of the axles, ω_run = ω_carrier; twentieth round g: C5-1.6's belt, C5-E.6's
-    chain were found and left out)."""
+    every body whose rate a step finds is listed, but the `runs` of belts and chains, to which
+    the notes give no rate (issue 30, round 29 c; round 20g had listed them); the ground, when
+    a drive wraps it (`ground`), with its 0, which the drive's step uses (ω_pulley1 = 0)."""
     def value(x, unit: str) -> Value:
         return Value(ctx.clean(x if ctx.planar else tuple(x), unit), unit)
 
+    # the ground first when a drive wraps it (`ground`: C5-1.6's fixed pulley, whose 0 the step uses)
+    listed = ([ctx.frame] if ground else []) + list(ctx.model.moving_bodies)
     rows = [[Name(b, "body", bare=True), value(ctx.omega(b), "rate")]
-            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies
-            if not ctx.fixed(b)]   # a weld to the frame: part of it
+            + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in listed
+            if b == ctx.frame or (not ctx.fixed(b) and b not in runs)]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)
 
 def _named_ground(ctx: Ctx, name: str) -> bool:

@@ -135,13 +135,23 @@ joint-prismatic = prismàtic (P)
 joint-revolute_word = articulació
 joint-prismatic_word = parell prismàtic
 joint-slot = passador en ranura
-joint-slot_fixed = contacte amb lliscament (un punt sobre una recta fixa)
+joint-slot_fixed = contacte amb lliscament sobre una recta fixa
 joint-wheel = roda (sense lliscament lateral)
 joint-rolling = rodolament
 joint-gear = engranatge
 joint-weld = sòlids solidaris
 joint-spherical = ròtula esfèrica
 joint-cylindrical = cilíndric
+along-joint = { WORD($verb) ->
+        [only] segons { $dir }
+        [rolls] la roda a { $point } rodola segons { $dir }
+       *[slides] { $point } llisca segons { $dir }
+    }
+along-horizontal = una recta horitzontal
+along-vertical = una recta vertical
+along-angle = { $vec }, a { $deg }° de l’horitzontal
+along-vector = { $vec }
+along-line = { $line }
 fig-arrow-velocity = la velocitat { ELISION($point) ->
         [vowel] d’{ $point }
        *[other] de { $point }
@@ -573,7 +583,7 @@ path-found = { $b } { COUNT($b) ->
 path-line = { $b } { COUNT($b) ->
         [many] rodolen
        *[one] rodola
-    } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), { $ac } = { $al } × { $arm }.
+    } sense lliscar sobre { $a }, que no es mou. El seu centre { $centre } manté la distància a { $a }: descriu una recta, sense acceleració normal; i com que { $vc } = { $w } × { $arm } a cada instant (el contacte { $point } és el CIR), la seva acceleració és només la seva component tangencial: { $ac } = { $at } = { $al } × { $arm }.
 rolling-equal = Sense lliscament al contacte { $point }: { $sym } = { $other }.
 rolling-same = { $gear ->
         [1] { $b } { COUNT($b) ->
@@ -709,6 +719,33 @@ curvature-centre = El centre de curvatura de la trajectòria { ELISION($point) -
         [vowel] d’{ $point }
        *[other] de { $point }
     } és a { $centre }, del costat de l’acceleració normal.
+curvature-centre_from = El centre de curvatura de la trajectòria { ELISION($point) ->
+        [vowel] d’{ $point }
+       *[other] de { $point }
+    } és { $where }.
+curvature-named = Amb { $d } = { $arm } = { $length }, { $rho } = { $value }.
+curvature-from = { WORD($side) ->
+        [up] a { $rho } per sobre { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }
+        [down] a { $rho } per sota { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }
+        [left] a { $rho } a l’esquerra { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }
+        [right] a { $rho } a la dreta { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }
+       *[other] a { $rho } { ELISION($point) ->
+            [vowel] d’{ $point }
+           *[other] de { $point }
+        }, en la direcció d’{ $an }
+    }
 curvature-intrinsic = Amb { $speed }, la tangent unitària és { $tangent }; { $split }, amb { $tangential }, i { $rest }, { $normal }:
 sec-answers = Respostes
 answers-none = El model no fa preguntes.
@@ -769,6 +806,7 @@ ans-from = distància { ELISION($point) ->
     }
 ans-direction = direcció
 ans-center = centre de curvatura
+ans-center_from = centre de curvatura { $where }
 ans-tangent = tangent unitària
 ans-slide = velocitat al llarg de l’eix
 ans-translation = una translació: sense circumferència d’inflexions
@@ -812,7 +850,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: l’oposada { WORD($
         [accel] de l’acceleració
        *[speed] de la velocitat
     } relativa trobada al pas { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: l’oposada de l’acceleració relativa trobada al pas { $step }. En general les dues acceleracions relatives no són oposades: la seva suma és l’oposada de la suma dels dos termes de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nul·la aquí, ja que { $vel } = 0 (contacte de rodolament).
+composition-reverse_rolling = Sense lliscament: { $vel } = 0, de manera que no hi ha terme de Coriolis i { $sym } = −{ $back } = { $value }, l’oposada de l’acceleració relativa trobada al pas { $step }.
 composition-pin = { $point } és una articulació, punt de tots dos sòlids: no té moviment relatiu, { $sym } = 0.
 vehicle-driven = La roda { $joint } no llisca: { $point } no té velocitat perpendicular al pla de la roda, de manera que la seva velocitat donada segons el pla és tota la seva velocitat: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al pla de la roda { $joint } pel punt { $point } (el seu eix: la roda no llisca lateralment)
@@ -1149,6 +1187,7 @@ centre-check = Comprovació amb les velocitats trobades a «{ sec-velocities }»
 sec-centres_v = CIR trobats a partir de les velocitats
 how-centre_infinity = (es trasllada: el seu CIR { $centre } és a l’infinit)
 how-constant_rate = ({ $sym } = { $value } és constant: { $line } conserva la seva longitud, i la seva velocitat angular la fixen els radis i { $rates }, que és constant)
+how-constant_speed = ({ $point } recorre la circumferència de radi { $line } = { $length } centrada a { $centre } amb la celeritat constant { $v } = { $speed }, de manera que { $sym } = { $value } és constant)
 idle-rolling = { $body } rodola sense lliscar sobre { $fixed }: el punt de contacte { $point } n’és el CIR, de manera que:
 idle-symmetry = { $body } té la mateixa disposició que { $like } (el mateix radi, els mateixos enllaços amb els mateixos sòlids): per simetria gira igual:
 idle-unused = { $bodies } no { $count ->
@@ -1260,17 +1299,6 @@ check-belt = Vista des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }
     }, que porta els dos eixos, { $line } no llisca ni sobre { $a } ni sobre { $b }: { $equation }, de manera que { $ratio }; amb les velocitats angulars trobades a «{ sec-velocities }», { $values }: coincideixen.
-how-run_translates = (el tram recte { ELISION($line) ->
-        [vowel] d’{ $line }
-       *[other] de { $line }
-    } es trasllada)
-how-translates = (el tram recte { ELISION($line) ->
-        [vowel] d’{ $line }
-       *[other] de { $line }
-    } es trasllada respecte { ELISION($body) ->
-        [vowel] d’{ $body }
-       *[other] de { $body }
-    })
 pair-relation_v = Vistos des { ELISION($holder) ->
         [vowel] d’{ $holder }
        *[other] de { $holder }

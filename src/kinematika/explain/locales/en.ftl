@@ -102,13 +102,23 @@ joint-prismatic = prismatic (P)
 joint-revolute_word = hinge
 joint-prismatic_word = prismatic pair
 joint-slot = pin in slot
-joint-slot_fixed = sliding contact (a point on a fixed line)
+joint-slot_fixed = sliding contact on a fixed line
 joint-wheel = wheel (knife edge)
 joint-rolling = rolling
 joint-gear = gear
 joint-weld = rigid joint
 joint-spherical = spherical
 joint-cylindrical = cylindrical
+along-joint = { WORD($verb) ->
+        [only] along { $dir }
+        [rolls] the wheel at { $point } rolls along { $dir }
+       *[slides] { $point } slides along { $dir }
+    }
+along-horizontal = a horizontal line
+along-vertical = a vertical line
+along-angle = { $vec }, at { $deg }° to the horizontal
+along-vector = { $vec }
+along-line = { $line }
 fig-arrow-velocity = the velocity of { $point }
 fig-arrow-drag = the drag velocity ({ $sym })
 fig-arrow-relative = the relative velocity ({ $sym })
@@ -453,7 +463,7 @@ path-line = { $b } { COUNT($b) ->
     } without slipping on { $a }, which does not move. { COUNT($b) ->
         [many] Their
        *[one] Its
-    } centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), { $ac } = { $al } × { $arm }.
+    } centre { $centre } keeps its distance from { $a }: it moves on a straight line, with no normal acceleration; and since { $vc } = { $w } × { $arm } at every instant (the contact { $point } is the instant centre), its acceleration is its tangential part alone: { $ac } = { $at } = { $al } × { $arm }.
 rolling-equal = No slip at the contact { $point }: { $sym } = { $other }.
 rolling-same = { $gear ->
         [1] { $b } { COUNT($b) ->
@@ -535,6 +545,15 @@ curvature-straight = The normal acceleration of { $point } is zero: its path is 
 curvature-circle = Point { $point }: it keeps its distance from the fixed point { $o }, so its path is the circle of radius { $radius } about { $o }; the radius of curvature is that radius:
 curvature-circle_centre = The centre of curvature of the path of { $point } is { $o }, at { $centre }.
 curvature-centre = The centre of curvature of the path of { $point } is at { $centre }, on the side of the normal acceleration.
+curvature-centre_from = The centre of curvature of the path of { $point } is { $where }.
+curvature-named = With { $d } = { $arm } = { $length }, { $rho } = { $value }.
+curvature-from = { WORD($side) ->
+        [up] { $rho } above { $point }
+        [down] { $rho } below { $point }
+        [left] { $rho } to the left of { $point }
+        [right] { $rho } to the right of { $point }
+       *[other] { $rho } from { $point }, along { $an }
+    }
 curvature-intrinsic = With { $speed }, the unit tangent is { $tangent }; { $split }, with { $tangential }, and { $rest }, { $normal }:
 sec-answers = Answers
 answers-none = The model asks no questions.
@@ -553,6 +572,7 @@ ans-point = position
 ans-from = distance from { $point }
 ans-direction = direction
 ans-center = centre of curvature
+ans-center_from = centre of curvature { $where }
 ans-tangent = unit tangent
 ans-slide = velocity along the axis
 ans-translation = a translation: no inflection circle
@@ -596,7 +616,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: the reverse of the r
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: the reverse of the relative acceleration found in Step { $step }. In general the two relative accelerations are not opposite: their sum is the opposite of the sum of the two Coriolis terms, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, zero here, since { $vel } = 0 (rolling contact).
+composition-reverse_rolling = No slip: { $vel } = 0, so there is no Coriolis term and { $sym } = −{ $back } = { $value }, the reverse of the relative acceleration found in Step { $step }.
 composition-pin = { $point } is a pin, a point of both bodies: it has no relative motion, { $sym } = 0.
 vehicle-driven = The wheel { $joint } does not slip: { $point } has no velocity across the wheel's plane, so its given speed along the plane is its whole velocity: { $sym } = { $value }.
 vehicle-line-wheel = the perpendicular at { $point } to the plane of wheel { $joint } (its axle: the wheel does not slip sideways)
@@ -810,6 +830,7 @@ centre-check = Check with the velocities found in “{ sec-velocities }”: on t
 sec-centres_v = Instant centres found from the velocities
 how-centre_infinity = (it translates: its instant centre { $centre } is at infinity)
 how-constant_rate = ({ $sym } = { $value } is constant: { $line } keeps its length, and its rate is set by the radii and by { $rates }, which is constant)
+how-constant_speed = ({ $point } runs on the circle of radius { $line } = { $length } about { $centre } at the constant speed { $v } = { $speed }, so { $sym } = { $value } is constant)
 idle-rolling = { $body } rolls without slipping on { $fixed }: its contact point { $point } is its instant centre, so:
 idle-symmetry = { $body } is placed like { $like } (the same radius, the same joints with the same bodies): by symmetry it turns alike:
 idle-unused = { $bodies } { $count ->
@@ -894,8 +915,6 @@ check-willis = Willis' formula: seen from { $carrier }, the train is an ordinary
        *[other] , with { $r1 } and { $r2 }
     }. With the angular velocities found in “{ sec-velocities }”, { $values } = { $ratio }: they agree.
 check-belt = Seen from { $holder }, which carries both axles, { $line } slips on neither { $a } nor { $b }: { $equation }, so { $ratio }; with the angular velocities found in “{ sec-velocities }”, { $values }: they agree.
-how-translates = (the straight run of { $line } translates relative to { $body })
-how-run_translates = (the straight run of { $line } translates)
 pair-relation_v = Seen from { $holder }, which carries both axles, the axles are fixed: { $a } and { $b } turn about them and do not slip on each other, so { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(with { $radii })

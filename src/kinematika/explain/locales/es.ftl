@@ -108,13 +108,23 @@ joint-prismatic = par prismático (P)
 joint-revolute_word = articulación
 joint-prismatic_word = par prismático
 joint-slot = pasador en ranura
-joint-slot_fixed = contacto con deslizamiento (un punto sobre una recta fija)
+joint-slot_fixed = contacto con deslizamiento sobre una recta fija
 joint-wheel = rueda (sin deslizamiento lateral)
 joint-rolling = rodadura
 joint-gear = engranaje
 joint-weld = sólidos solidarios
 joint-spherical = par esférico
 joint-cylindrical = par cilíndrico
+along-joint = { WORD($verb) ->
+        [only] a lo largo de { $dir }
+        [rolls] la rueda en { $point } rueda a lo largo de { $dir }
+       *[slides] { $point } desliza a lo largo de { $dir }
+    }
+along-horizontal = una recta horizontal
+along-vertical = una recta vertical
+along-angle = { $vec }, a { $deg }° de la horizontal
+along-vector = { $vec }
+along-line = { $line }
 fig-arrow-velocity = la velocidad de { $point }
 fig-arrow-drag = la velocidad de arrastre ({ $sym })
 fig-arrow-relative = la velocidad relativa ({ $sym })
@@ -428,7 +438,7 @@ path-found = { $b } { COUNT($b) ->
 path-line = { $b } { COUNT($b) ->
             [many] ruedan
            *[one] rueda
-        } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), { $ac } = { $al } × { $arm }.
+        } sin deslizar sobre { $a }, que no se mueve. Su centro { $centre } mantiene la distancia a { $a }: describe una recta, sin aceleración normal; y como { $vc } = { $w } × { $arm } en todo instante (el contacto { $point } es el CIR), su aceleración es solo su componente tangencial: { $ac } = { $at } = { $al } × { $arm }.
 rolling-equal = Sin deslizamiento en el contacto { $point }: { $sym } = { $other }.
 rolling-same = { $gear ->
         [1] { $b } { COUNT($b) ->
@@ -507,6 +517,15 @@ curvature-straight = La aceleración normal de { $point } es nula: su trayectori
 curvature-circle = Punto { $point }: mantiene la distancia al punto fijo { $o }, así que su trayectoria es la circunferencia de radio { $radius } centrada en { $o }; el radio de curvatura es ese radio:
 curvature-circle_centre = El centro de curvatura de la trayectoria de { $point } es { $o }, en { $centre }.
 curvature-centre = El centro de curvatura de la trayectoria de { $point } está en { $centre }, del lado de la aceleración normal.
+curvature-centre_from = El centro de curvatura de la trayectoria de { $point } está { $where }.
+curvature-named = Con { $d } = { $arm } = { $length }, { $rho } = { $value }.
+curvature-from = { WORD($side) ->
+        [up] a { $rho } por encima de { $point }
+        [down] a { $rho } por debajo de { $point }
+        [left] a { $rho } a la izquierda de { $point }
+        [right] a { $rho } a la derecha de { $point }
+       *[other] a { $rho } de { $point }, según { $an }
+    }
 curvature-intrinsic = Con { $speed }, la tangente unitaria es { $tangent }; { $split }, con { $tangential }, y { $rest }, { $normal }:
 sec-answers = Respuestas
 answers-none = El modelo no hace preguntas.
@@ -525,6 +544,7 @@ ans-point = posición
 ans-from = distancia a { $point }
 ans-direction = dirección
 ans-center = centro de curvatura
+ans-center_from = centro de curvatura { $where }
 ans-tangent = tangente unitaria
 ans-slide = velocidad a lo largo del eje
 ans-translation = una traslación: sin circunferencia de inflexiones
@@ -559,7 +579,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: la opuesta de la { W
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: la opuesta de la aceleración relativa hallada en el paso { $step }. En general las dos aceleraciones relativas no son opuestas: su suma es la opuesta de la suma de los dos términos de Coriolis, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, nula aquí, ya que { $vel } = 0 (contacto de rodadura).
+composition-reverse_rolling = Sin deslizamiento: { $vel } = 0, así que no hay término de Coriolis y { $sym } = −{ $back } = { $value }, la opuesta de la aceleración relativa hallada en el paso { $step }.
 composition-pin = { $point } es una articulación, punto de ambos sólidos: no tiene movimiento relativo, { $sym } = 0.
 vehicle-driven = La rueda { $joint } no desliza: { $point } no tiene velocidad perpendicular al plano de la rueda, así que su velocidad dada según el plano es toda su velocidad: { $sym } = { $value }.
 vehicle-line-wheel = la perpendicular al plano de la rueda { $joint } por el punto { $point } (su eje: la rueda no desliza lateralmente)
@@ -758,6 +778,7 @@ centre-check = Comprobación con las velocidades halladas en «{ sec-velocities 
 sec-centres_v = CIR hallados a partir de las velocidades
 how-centre_infinity = (se traslada: su CIR { $centre } está en el infinito)
 how-constant_rate = ({ $sym } = { $value } es constante: { $line } conserva su longitud, y su velocidad angular la fijan los radios y { $rates }, que es constante)
+how-constant_speed = ({ $point } recorre la circunferencia de radio { $line } = { $length } centrada en { $centre } con la celeridad constante { $v } = { $speed }, así que { $sym } = { $value } es constante)
 idle-rolling = { $body } { COUNT($body) ->
         [many] ruedan
        *[one] rueda
@@ -833,8 +854,6 @@ check-willis = Fórmula de Willis: vista desde { $carrier }, el tren es ordinari
        *[other] , con { $r1 } y { $r2 }
     }. Con las velocidades angulares halladas en «{ sec-velocities }», { $values } = { $ratio }: coinciden.
 check-belt = Vista desde { $holder }, que lleva los dos ejes, { $line } no desliza sobre { $a } ni sobre { $b }: { $equation }, de modo que { $ratio }; con las velocidades angulares halladas en «{ sec-velocities }», { $values }: coinciden.
-how-translates = (el tramo recto de { $line } se traslada respecto de { $body })
-how-run_translates = (el tramo recto de { $line } se traslada)
 pair-relation_v = Vistos desde { $holder }, que lleva los dos ejes, los ejes están fijos: { $a } y { $b } giran alrededor de ellos y no deslizan entre sí, de modo que { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}(con { $radii })

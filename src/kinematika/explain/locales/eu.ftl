@@ -102,13 +102,23 @@ joint-prismatic = prismatikoa (P)
 joint-revolute_word = giltzadura
 joint-prismatic_word = lotura prismatikoa
 joint-slot = ziria arteka batean
-joint-slot_fixed = irristadurazko kontaktua (puntu bat zuzen finko batean)
+joint-slot_fixed = zuzen finko bateko irristadurazko kontaktua
 joint-wheel = gurpila (alboko irristarik gabe)
 joint-rolling = errodadura
 joint-gear = engranajea
 joint-weld = lotura zurruna
 joint-spherical = esferikoa
 joint-cylindrical = zilindrikoa
+along-joint = { WORD($verb) ->
+        [only] norabidea: { $dir }
+        [rolls] { $point } puntuko gurpila errodatu egiten da; norabidea: { $dir }
+       *[slides] { $point } puntua irristatu egiten da; norabidea: { $dir }
+    }
+along-horizontal = horizontala
+along-vertical = bertikala
+along-angle = { $vec }, horizontalarekiko { $deg }°
+along-vector = { $vec }
+along-line = { $line }
 fig-arrow-velocity = { $point } puntuaren abiadura
 fig-arrow-drag = arrastre-abiadura ({ $sym })
 fig-arrow-relative = abiadura erlatiboa ({ $sym })
@@ -390,7 +400,7 @@ rolling-glide = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren er
 rolling-kept = kontaktua mantentzen da: { $point } puntuan { $b } eta { $a } solidoen puntu materialen azelerazioak normal komunaren norabideko termino batean baino ez dira desberdinak; ez dago Coriolisen terminorik, errodadura-kontaktu batean bi puntuek ez baitute abiadura erlatiborik: { $vrel } = 0.
 path-circle = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: { $o } zentroko eta { $radius } erradioko zirkunferentzia deskribatzen du; beraz, { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren osagai tangentziala { $al } × { $arm } da.
 path-found = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. { $step }. urratsean aurkitutako { $ac } azelerazioak { $vs }² / { $radius } osagai normala du, { $o } aldera, eta osagai tangentziala { $al } × { $arm } da, une oro { $vc } = { $w } × { $arm } baita ({ $point } kontaktua biraketa-zentro instantaneoa da).
-path-line = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), { $ac } = { $al } × { $arm }.
+path-line = { $b } solidoa irristatu gabe errodatzen da { $a } solidoaren gainean, eta { $a } ez da mugitzen. Haren { $centre } zentroak { $a } solidoarekiko distantzia mantentzen du: zuzen bat deskribatzen du, azelerazio normalik gabe; eta une oro { $vc } = { $w } × { $arm } denez ({ $point } kontaktua biraketa-zentro instantaneoa da), haren azelerazioa osagai tangentziala da soilik: { $ac } = { $at } = { $al } × { $arm }.
 rolling-equal = Irristadurarik ez { $point } kontaktuan: { $sym } = { $other }.
 rolling-same = { $gear ->
         [1] { $b } solidoak { $a } solidoarekin engranatzen du
@@ -454,6 +464,15 @@ curvature-straight = { $point } puntuaren azelerazio normala nulua da: haren ibi
 curvature-circle = { $point } puntua: { $o } puntu finkoarekiko distantzia mantentzen du; beraz, haren ibilbidea { $o } zentroko eta { $radius } erradioko zirkunferentzia da, eta kurbadura-erradioa erradio hori da:
 curvature-circle_centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $o } puntua da, { $centre } posizioan.
 curvature-centre = { $point } puntuaren ibilbidearen kurbadura-zentroa { $centre } puntuan dago, azelerazio normalaren aldean.
+curvature-centre_from = { $point } puntuaren ibilbidearen kurbadura-zentroa { $where } dago.
+curvature-named = { $d } = { $arm } = { $length } izanik, { $rho } = { $value }.
+curvature-from = { WORD($side) ->
+        [up] { $point } puntuaren gainetik { $rho } distantziara
+        [down] { $point } puntuaren azpitik { $rho } distantziara
+        [left] { $point } puntuaren ezkerretara { $rho } distantziara
+        [right] { $point } puntuaren eskuinetara { $rho } distantziara
+       *[other] { $point } puntutik { $rho } distantziara, { $an } azelerazioaren norabidean
+    }
 curvature-intrinsic = { $speed } izanik, ukitzaile unitarioa { $tangent } da; { $split }, { $tangential } izanik, eta { $rest }, { $normal }:
 sec-answers = Erantzunak
 answers-none = Ereduak ez du galderarik egiten.
@@ -472,6 +491,7 @@ ans-point = posizioa
 ans-from = { $point } puntura dagoen distantzia
 ans-direction = norabidea
 ans-center = kurbadura-zentroa
+ans-center_from = kurbadura-zentroa { $where }
 ans-tangent = ukitzaile unitarioa
 ans-slide = ardatzaren norabideko abiadura
 ans-translation = translazio bat: ez dago inflexio-zirkunferentziarik
@@ -503,7 +523,7 @@ composition-reverse = { $sym } = −{ $back } = { $value }: { $step }. urratsean
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboaren aurkakoa.
-composition-reverse_rolling = { $sym } = −{ $back } = { $value }: { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa. Oro har, bi azelerazio erlatiboak ez dira aurkakoak: haien batura bi Coriolisen terminoen baturaren aurkakoa da, { $sym } + { $back } = 2 ({ $wb } − { $wa }) × { $vel }, hemen nulua, { $vel } = 0 baita (errodadura-kontaktua).
+composition-reverse_rolling = Irristadurarik ez: { $vel } = 0; beraz, ez dago Coriolisen terminorik, eta { $sym } = −{ $back } = { $value }, { $step }. urratsean aurkitutako azelerazio erlatiboaren aurkakoa.
 composition-pin = { $point } puntua giltzadura bat da, bi solidoen puntua: ez du mugimendu erlatiborik, { $sym } = 0.
 vehicle-driven = { $joint } gurpila ez da irristatzen: { $point } puntuak ez du abiadurarik gurpilaren planoarekiko perpendikularki; beraz, planoaren norabideko abiadura emana da haren abiadura osoa: { $sym } = { $value }.
 vehicle-line-wheel = { $joint } gurpilaren planoarekiko perpendikularra { $point } puntuan (haren ardatza: gurpila ez da alboetara irristatzen)
@@ -681,6 +701,7 @@ centre-check = Egiaztapena «{ sec-velocities }» atalean aurkitutako abiadureki
 sec-centres_v = Abiaduretatik aurkitutako biraketa-zentro instantaneoak
 how-centre_infinity = (traslatzen da: { $centre } biraketa-zentro instantaneoa infinituan dago)
 how-constant_rate = ({ $sym } = { $value } konstantea da: { $line } zuzenak bere luzera gordetzen du, eta haren abiadura angeluarra erradioek eta { $rates } konstanteak finkatzen dute)
+how-constant_speed = ({ $point } puntuak { $centre } zentroko eta { $line } = { $length } erradioko zirkunferentzia deskribatzen du { $v } = { $speed } abiadura konstantez; beraz, { $sym } = { $value } konstantea da)
 idle-rolling = { $body } irristatu gabe errodatzen da { $fixed } solidoaren gainean: kontaktuko { $point } puntua haren biraketa-zentro instantaneoa da; beraz:
 idle-symmetry = { $body } { $like } bezala kokatuta dago (erradio bera, lotura berak solido berekin): simetriagatik berdin biratzen da:
 idle-unused = { $bodies } ez { $count ->
@@ -753,8 +774,6 @@ check-willis = Willisen formula: { $carrier } solidotik ikusita, trena arrunta d
        *[other] , { $r1 } eta { $r2 } izanik
     }. Aurkitutako abiadura angeluarrekin, { $values } = { $ratio }: bat datoz.
 check-belt = Bi ardatzak daramatzan { $holder } solidotik ikusita, { $line } solidoa ez da irristatzen ez { $a } solidoaren gainean ez { $b } solidoaren gainean: { $equation }; beraz, { $ratio }; «{ sec-velocities }» atalean aurkitutako abiadura angeluarrekin, { $values }: bat datoz.
-how-translates = ({ $line } solidoaren zati zuzena { $body } solidoarekiko traslatzen da)
-how-run_translates = ({ $line } solidoaren zati zuzena traslatzen da)
 pair-relation_v = Bi ardatzak daramatzan { $holder } solidotik ikusita, ardatzak finkoak dira: { $a } eta { $b } haien inguruan biratzen dira eta ez dute elkarren gainean irristatzen; beraz, { $equation }{ $radii ->
         [0] {""}
        *[other] {" "}({ $radii } izanik)
