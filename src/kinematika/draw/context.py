@@ -32,6 +32,7 @@ class Context:
         self.dim = scene.dim
         self.marks: list[Mark] = []
         self.owner: Optional[str] = None      # the body being drawn: the outlines `avoid` keeps are its
+        self.arrows: list[tuple[np.ndarray, np.ndarray]] = []   # the vectors' arrows to draw (start, end): what a wheel's cross-hair leaves room for
 
     # what a joint's symbol asks of its figure (`joints.symbols`) ------------------------
     def centroid(self) -> np.ndarray:

@@ -34,6 +34,8 @@ def picture(scene: Scene, view: Box, drawn: Optional[list] = None, still: bool =
     `results` the curvature circles, screw axes, instant centres and Kennedy lines and the
     `drawn` arrows (`vectors.arrows`); colours are colours (a symbol's roles resolved)."""
     ctx = Context(scene, view, still, labels, words, lang, reach)
+    if results:
+        ctx.arrows = [(a.start, a.end) for a in drawn or [] if a.drawn]
     draw_bodies(ctx)
     draw_joints(ctx)
     if results:

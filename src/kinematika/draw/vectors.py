@@ -13,7 +13,7 @@ from typing import Optional
 
 import numpy as np
 
-from .geometry import unit
+from .geometry import overlap_along, perpendicular, points_to_data, unit
 from .context import Context
 from .scene import VectorView
 from .names import equation
@@ -23,6 +23,9 @@ ZERO = 1e-9          # relative to the largest vector of the kind
 SIDE = 4.0           # points between arrows along one line from one point
 SIDE_ANGLE = 6.0     # degrees: arrows closer than this in direction are side by side
 HALO = 1.6           # points of white casing each side of an arrow's stroke (`arrow_mark`)
+WIDTH = 2.2          # points: an arrow's stroke (`arrow_mark`)
+HEAD = 8.0           # points: about an arrow's head's length (`arrow_mark`'s size 15): what it may share with a line
+GAP = 1.0            # points of paper between a line and an arrow set beside it (`off_lines`)
 
 
 @dataclass
@@ -182,7 +185,7 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
     one point in nearly one direction are set side by side, and a zero vector gets its label at
     the point. The page moves an absolute vector's arrow over the sweep (`about`: the swept
     point, the symbol, whether it is drawn ending at its point)."""
-    shifts = side_shifts(drawn, ctx.size)
+    shifts = [side + off_lines(ctx, arrow, side) for arrow, side in zip(drawn, side_shifts(drawn, ctx.size))]
     for arrow, shift in zip(drawn, shifts):
         v = arrow.view
         colour = KIND_COLOURS[v.kind]
@@ -201,11 +204,67 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
         ctx.add("arrow", [arrow.start, arrow.end], layer=layer, group=group, about=about,
                 **arrow_mark(arrow, v.key, shift))          # of no length: none drawn
         if arrow.drawn:
-            ctx.avoid(arrow.start, arrow.end, weight=3.0)
+            aside = perpendicular(unit(arrow.end - arrow.start)) * points_to_data(shift, ctx.view)
+            ctx.avoid(arrow.start + aside, arrow.end + aside, weight=3.0)
             ctx.add("clear", [arrow.start, arrow.end], avoid=0.0, zorder=0, group=f"head:{v.key}")
             free, away = (arrow.start, arrow.start - arrow.end) if arrow.tip_at_point else \
                 (arrow.end, arrow.end - arrow.start)                # the label beyond the free end
-            ctx.label(free, text, colour, 1, v.key, away, layer=layer, group=group, about=said,
-                      shaft=np.array([arrow.start, arrow.end], dtype=float))
+            ctx.label(free + aside, text, colour, 1, v.key, away, layer=layer, group=group, about=said,
+                      shaft=np.array([arrow.start, arrow.end], dtype=float) + aside)
         else:
             ctx.label(arrow.start, text, colour, 1, v.key, layer=layer, group=group, about=said)
+
+
+def drawn_lines(ctx: Context) -> list[tuple[np.ndarray, float]]:
+    """The lines drawn so far that an arrow could lie along, each as its polyline (data; a
+    polygon's closed) and its width (points): bars, strands, belts, rims' chords, the
+    ground's edges, joints' blocks, construction lines — no arrow, dot, circle or text."""
+    out = []
+    for m in ctx.marks:
+        if m.kind not in ("line", "polygon") or m.width <= 0 or m.colour == "none":
+            continue
+        pts = np.asarray(m.points, dtype=float)
+        out.append((np.vstack([pts, pts[:1]]) if m.kind == "polygon" else pts, float(m.width)))
+    return out
+
+
+def _under(p: np.ndarray, q: np.ndarray, lines: list, view) -> tuple[float, float]:
+    """How long the arrow pq runs along the lines (`geometry.overlap_along`: the longest
+    stretch one line shares with it, near enough to touch its stroke), and the widest such
+    line's width (points)."""
+    longest, wide = 0.0, 0.0
+    for pts, width in lines:
+        near = points_to_data(width / 2 + WIDTH / 2 + HALO, view)
+        for a, b in zip(pts[:-1], pts[1:]):
+            run = overlap_along(p, q, a, b, near)
+            if run > 0:
+                longest, wide = max(longest, run), max(wide, width)
+    return longest, wide
+
+
+def off_lines(ctx: Context, arrow: Arrow, side: float = 0.0) -> float:
+    """The sideways shift (points, along the arrow's left normal) that sets `arrow` beside
+    the lines it would run along for more than its head's length (`HEAD`), parallel to
+    them, clear of their stroke (`GAP`): drawn over C5-2.2's chassis bars (v_O, v_P),
+    C5-1.5's strands (v_T2, v_K), C5-E.6's chain and frame tube (v_H), the line vanished
+    under the arrow and its value read as written on the line, white casing or not (issue
+    30, twenty-ninth round (e): round 27 (f) drew it over the bar, cased). The arrow keeps
+    its point's place along the line, beside the point's dot, on the side where it lies
+    along fewer lines, away from the mechanism when both are clear; 0 when it runs along
+    none (a wheel's cross-hair leaves room for it: `bodies.cross_hair`)."""
+    if not arrow.drawn:
+        return 0.0
+    lines = drawn_lines(ctx)
+    start, end = arrow.start, arrow.end
+    n = perpendicular(unit(end - start))
+    run, wide = _under(start, end, lines, ctx.view)
+    if run <= points_to_data(HEAD, ctx.view):
+        return 0.0
+    away = wide / 2 + WIDTH / 2 + HALO + GAP
+    best = None
+    for sign in sorted((1.0, -1.0), key=lambda k: -k * float(n @ ((start + end) / 2 - ctx.centroid()))):
+        off = n * points_to_data(side + sign * away, ctx.view)
+        left, _ = _under(start + off, end + off, lines, ctx.view)
+        if best is None or left < best[0] - 1e-9 * ctx.size:
+            best = (left, sign * away)
+    return best[1]
