@@ -243,7 +243,7 @@ def cross_hair(ctx: Context, centre: np.ndarray, radius: float) -> list[np.ndarr
     arrow leaves the centre along it (issue 30, twenty-ninth round (e)). Whole arms are kept
     as a line through the centre (one mark for two opposite arms)."""
     arms = []
-    near = points_to_data(CROSS_HAIR, ctx.view)
+    near = points_to_data(CROSS_HAIR, ctx.view, getattr(ctx, "per_point", None))
     for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
         kept = [float(sign) for sign in (-1.0, 1.0)
                 if not any(overlap_along(a, b, centre, centre + sign * 0.8 * radius * d, near) > 0.16 * radius

@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib.path import Path
 
 from ..joints.symbols import Mark, ring
-from .geometry import Box, clip_line
+from .geometry import Box, clip_line, points_to_data
 from .scene import Scene
 from .style import LABEL_SIZE
 
@@ -23,8 +23,9 @@ class Context:
 
     def __init__(self, scene: Scene, view: Box, still: bool = True, labels: bool = True,
                  words: bool = True, lang: Optional[str] = None,
-                 reach: Optional[Box] = None) -> None:
+                 reach: Optional[Box] = None, per_point: Optional[float] = None) -> None:
         self.scene, self.view, self.still = scene, view, still
+        self.per_point = per_point            # drawing units a point on the page, when the figure's scale is known
         self.reach = reach or view
         self.labels, self.words, self.lang = labels, words, lang
         self.size = scene.size
@@ -33,6 +34,10 @@ class Context:
         self.marks: list[Mark] = []
         self.owner: Optional[str] = None      # the body being drawn: the outlines `avoid` keeps are its
         self.arrows: list[tuple[np.ndarray, np.ndarray]] = []   # the vectors' arrows to draw (start, end): what a wheel's cross-hair leaves room for
+
+    def pt(self, points: float) -> float:
+        """`points` on the page in the drawing's units (`geometry.points_to_data`)."""
+        return points_to_data(points, self.view, self.per_point)
 
     # what a joint's symbol asks of its figure (`joints.symbols`) ------------------------
     def centroid(self) -> np.ndarray:

@@ -136,10 +136,12 @@ AXES_POINTS = 72 * 0.96 * 8.0     # points across a figure's axes at the default
 ALONG_ANGLE = 8.0                 # degrees: a line this near an arrow's direction runs along it
 
 
-def points_to_data(points: float, view: Box) -> float:
-    """A length of `points` on the page in the drawing's units, as a figure of the default
-    width shows `view` (its labels may widen it a little: an estimate, for telling whether two
-    strokes touch)."""
+def points_to_data(points: float, view: Box, per_point: Optional[float] = None) -> float:
+    """A length of `points` on the page in the drawing's units: at `per_point` (units a
+    point, the figure's own scale when it is known), else as a figure of the default width
+    shows `view` (an estimate, for telling whether two strokes touch)."""
+    if per_point:
+        return points * per_point
     return points * max(view.width, view.height, 1e-300) / AXES_POINTS
 
 

@@ -204,7 +204,7 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
         ctx.add("arrow", [arrow.start, arrow.end], layer=layer, group=group, about=about,
                 **arrow_mark(arrow, v.key, shift))          # of no length: none drawn
         if arrow.drawn:
-            aside = perpendicular(unit(arrow.end - arrow.start)) * points_to_data(shift, ctx.view)
+            aside = perpendicular(unit(arrow.end - arrow.start)) * ctx.pt(shift)
             ctx.avoid(arrow.start + aside, arrow.end + aside, weight=3.0)
             ctx.add("clear", [arrow.start, arrow.end], avoid=0.0, zorder=0, group=f"head:{v.key}")
             free, away = (arrow.start, arrow.start - arrow.end) if arrow.tip_at_point else \
@@ -228,13 +228,13 @@ def drawn_lines(ctx: Context) -> list[tuple[np.ndarray, float]]:
     return out
 
 
-def _under(p: np.ndarray, q: np.ndarray, lines: list, view) -> tuple[float, float]:
+def _under(p: np.ndarray, q: np.ndarray, lines: list, view, per_point: Optional[float] = None) -> tuple[float, float]:
     """How long the arrow pq runs along the lines (`geometry.overlap_along`: the longest
     stretch one line shares with it, near enough to touch its stroke), and the widest such
     line's width (points)."""
     longest, wide = 0.0, 0.0
     for pts, width in lines:
-        near = points_to_data(width / 2 + WIDTH / 2 + HALO, view)
+        near = points_to_data(width / 2 + WIDTH / 2 + HALO, view, per_point)
         for a, b in zip(pts[:-1], pts[1:]):
             run = overlap_along(p, q, a, b, near)
             if run > 0:
@@ -250,21 +250,26 @@ def off_lines(ctx: Context, arrow: Arrow, side: float = 0.0) -> float:
     under the arrow and its value read as written on the line, white casing or not (issue
     30, twenty-ninth round (e): round 27 (f) drew it over the bar, cased). The arrow keeps
     its point's place along the line, beside the point's dot, on the side where it lies
-    along fewer lines, away from the mechanism when both are clear; 0 when it runs along
+    along fewer lines, away from the mechanism when both are clear, farther out (up to three
+    times) when a line beside the first one is in the way; 0 when it runs along
     none (a wheel's cross-hair leaves room for it: `bodies.cross_hair`)."""
     if not arrow.drawn:
         return 0.0
     lines = drawn_lines(ctx)
     start, end = arrow.start, arrow.end
     n = perpendicular(unit(end - start))
-    run, wide = _under(start, end, lines, ctx.view)
-    if run <= points_to_data(HEAD, ctx.view):
+    run, wide = _under(start, end, lines, ctx.view, ctx.per_point)
+    if run <= ctx.pt(HEAD):
         return 0.0
     away = wide / 2 + WIDTH / 2 + HALO + GAP
     best = None
-    for sign in sorted((1.0, -1.0), key=lambda k: -k * float(n @ ((start + end) / 2 - ctx.centroid()))):
-        off = n * points_to_data(side + sign * away, ctx.view)
-        left, _ = _under(start + off, end + off, lines, ctx.view)
-        if best is None or left < best[0] - 1e-9 * ctx.size:
-            best = (left, sign * away)
+    signs = sorted((1.0, -1.0), key=lambda k: -k * float(n @ ((start + end) / 2 - ctx.centroid())))
+    for reach in (1.0, 1.5, 2.0, 3.0):      # farther out when a line beside it (a block's edge) is in the way
+        for sign in signs:
+            off = n * ctx.pt(side + sign * reach * away)
+            left, _ = _under(start + off, end + off, lines, ctx.view, ctx.per_point)
+            if best is None or left < best[0] - 1e-9 * ctx.size:
+                best = (left, sign * reach * away)
+        if best[0] <= ctx.pt(HEAD):
+            break
     return best[1]
