@@ -25,7 +25,7 @@ SIDE_ANGLE = 6.0     # degrees: arrows closer than this in direction are side by
 HALO = 1.6           # points of white casing each side of an arrow's stroke (`arrow_mark`)
 WIDTH = 2.2          # points: an arrow's stroke (`arrow_mark`)
 HEAD = 8.0           # points: about an arrow's head's length (`arrow_mark`'s size 15): what it may share with a line
-GAP = 1.0            # points of paper between a line and an arrow set beside it (`off_lines`)
+GAP = 2.0            # points of paper between a line and an arrow set beside it (`off_lines`)
 
 
 @dataclass
