@@ -11,7 +11,10 @@ drew them (`helpers.figures`), in display pixels.
 """
 from __future__ import annotations
 
+import itertools
+
 import matplotlib
+from matplotlib.path import Path
 import numpy as np
 
 from .helpers import NOTES_SEEDS, RECORDED_LANGS, figures, over
@@ -24,7 +27,7 @@ def _segments(m) -> list:
     pts = np.asarray(m.points, float)
     if m.kind == "polygon":
         pts = np.vstack([pts, pts[:1]])
-    return list(zip(pts[:-1], pts[1:]))
+    return list(itertools.pairwise(pts))
 
 
 def _shared(p, q, a, b, near: float, degrees: float = 8.0) -> float:
@@ -145,7 +148,7 @@ def test_no_arrow_starts_under_a_black_block(name, lang):
                 continue
             start = np.asarray(m.points[0], float)
             for b in blocks:
-                if matplotlib.path.Path(np.asarray(b.points, float)).contains_point(start):
+                if Path(np.asarray(b.points, float)).contains_point(start):
                     bad.append(f"{m.gid} in {b.gid}")
     assert not bad, bad
 

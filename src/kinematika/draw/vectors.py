@@ -7,6 +7,7 @@ then says "enlarged". A zero vector gets no arrow, only its label (= 0) at the p
 """
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 from typing import Optional
@@ -235,7 +236,7 @@ def _under(p: np.ndarray, q: np.ndarray, lines: list, view, per_point: Optional[
     longest, wide = 0.0, 0.0
     for pts, width in lines:
         near = points_to_data(width / 2 + WIDTH / 2 + HALO, view, per_point)
-        for a, b in zip(pts[:-1], pts[1:]):
+        for a, b in itertools.pairwise(pts):
             run = overlap_along(p, q, a, b, near)
             if run > 0:
                 longest, wide = max(longest, run), max(wide, width)
