@@ -208,7 +208,7 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
         for arm in cross_hair(ctx, centre, s.radius):
             ctx.add("line", arm, width=1.0, colour=body.colour, alpha=0.4 if s.apart else 0.8, zorder=3,
                     moves_with=name, avoid=0.0)
-            ctx.avoid(*arm, width=CROSS_HAIR)
+            ctx.avoid(*arm, width=CROSS_HAIR, centre=True)
         ctx.avoid(*_ring(centre, s.radius))
         ctx.area(*_ring(centre, s.radius))
     elif s.kind == "line":

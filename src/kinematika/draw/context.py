@@ -114,15 +114,16 @@ class Context:
         return mark
 
     def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, bar: bool = False,
-              width: float = 0.0) -> None:
+              width: float = 0.0, centre: bool = False) -> None:
         """Keep labels off the polyline through these points (a single point too); `weight`
         says how bad covering it is (arrows and marks more than bars), `radius` (points) how
         far around each point the drawing reaches; drawn while a body is (`owner`), it is
         that body's outline (`bar`: its bar), which that body's name may reach across and
         no other label's leader crosses (`draw.labels`); `width` (points) how wide it is
-        drawn, when wider than a line (a bar)."""
+        drawn, when wider than a line (a bar); `centre`: a wheel's centre line, an outline
+        that a point's letter keeps off too (`draw.labels.Layout._lines_under`)."""
         owner = self.owner
-        role = "bar" if bar else "outline"
+        role = "bar" if bar else "centre" if centre else "outline"
         self.add("clear", [np.asarray(p, dtype=float) for p in polyline], avoid=weight,
                  radius=radius, width=width, zorder=0, **({"group": f"{role}:{owner}"} if owner else {}))
 

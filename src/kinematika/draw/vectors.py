@@ -13,6 +13,7 @@ from dataclasses import dataclass
 from typing import Optional
 
 import numpy as np
+from matplotlib.path import Path
 
 from .geometry import overlap_along, perpendicular, points_to_data, unit
 from .context import Context
@@ -267,10 +268,35 @@ def off_lines(ctx: Context, arrow: Arrow, side: float = 0.0) -> float:
     signs = sorted((1.0, -1.0), key=lambda k: -k * float(n @ ((start + end) / 2 - ctx.centroid())))
     for reach in (1.0, 1.5, 2.0, 3.0):      # farther out when a line beside it (a block's edge) is in the way
         for sign in signs:
-            off = n * ctx.pt(side + sign * reach * away)
+            shift = sign * reach * away
+            off = n * ctx.pt(side + shift)
             left, _ = _under(start + off, end + off, lines, ctx.view, ctx.per_point)
-            if best is None or left < best[0] - 1e-9 * ctx.size:
-                best = (left, sign * reach * away)
-        if best[0] <= ctx.pt(HEAD):
-            break
-    return best[1]
+            if reach == 1.0 and (best is None or left < best[0] - 1e-9 * ctx.size):
+                best = (left, shift)
+            if left <= ctx.pt(HEAD) and (reach == 1.0 or not _jumps(start, end, n * ctx.pt(shift), lines, ctx)):
+                return shift
+    return best[1]           # no side clear: the side it shares least with
+
+
+def _jumps(start: np.ndarray, end: np.ndarray, off: np.ndarray, lines: list, ctx: Context) -> bool:
+    """Whether setting the arrow start→end `off` sideways takes it across a line parallel to
+    it (a guide's edge, a wall): beyond it, it would lie in the ground or on another body. A
+    block it starts in is left behind, not jumped (C5-1.5's v_K, set beside its strand and
+    its block's edge, clear of both)."""
+    length = float(np.linalg.norm(off))
+    if length <= 0:
+        return False
+    d, n = unit(end - start), off / length
+    for pts, width in lines:
+        if np.allclose(pts[0], pts[-1]) and len(pts) > 3 and Path(pts).contains_point(start):
+            continue         # a block the arrow starts in (its point's slider): it leaves it anyway
+        for a, b in itertools.pairwise(pts):
+            if np.linalg.norm(b - a) <= 0 or abs(float(unit(b - a) @ d)) < math.cos(math.radians(8)):
+                continue
+            ta, tb = sorted((float((a - start) @ d), float((b - start) @ d)))
+            if min(tb, float(np.linalg.norm(end - start))) - max(ta, 0.0) <= ctx.pt(HEAD):
+                continue
+            across = float((0.5 * (a + b) - start) @ n)
+            if ctx.pt(width / 2 + WIDTH / 2 + HALO) < across < length:
+                return True
+    return False
