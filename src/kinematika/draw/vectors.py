@@ -264,14 +264,14 @@ def off_lines(ctx: Context, arrow: Arrow, side: float = 0.0) -> float:
     if run <= ctx.pt(HEAD):
         return 0.0
     away = wide / 2 + WIDTH / 2 + HALO + GAP
-    best = None
+    best: tuple[float, float] = (math.inf, 0.0)
     signs = sorted((1.0, -1.0), key=lambda k: -k * float(n @ ((start + end) / 2 - ctx.centroid())))
     for reach in (1.0, 1.5, 2.0, 3.0):      # farther out when a line beside it (a block's edge) is in the way
         for sign in signs:
             shift = sign * reach * away
             off = n * ctx.pt(side + shift)
             left, _ = _under(start + off, end + off, lines, ctx.view, ctx.per_point)
-            if reach == 1.0 and (best is None or left < best[0] - 1e-9 * ctx.size):
+            if reach == 1.0 and left < best[0] - 1e-9 * ctx.size:
                 best = (left, shift)
             if left <= ctx.pt(HEAD) and (reach == 1.0 or not _jumps(start, end, n * ctx.pt(shift), lines, ctx)):
                 return shift
@@ -288,7 +288,7 @@ def _jumps(start: np.ndarray, end: np.ndarray, off: np.ndarray, lines: list, ctx
         return False
     d, n = unit(end - start), off / length
     for pts, width in lines:
-        if np.allclose(pts[0], pts[-1]) and len(pts) > 3 and Path(pts).contains_point(start):
+        if np.allclose(pts[0], pts[-1]) and len(pts) > 3 and Path(pts).contains_point((float(start[0]), float(start[1]))):
             continue         # a block the arrow starts in (its point's slider): it leaves it anyway
         for a, b in itertools.pairwise(pts):
             if np.linalg.norm(b - a) <= 0 or abs(float(unit(b - a) @ d)) < math.cos(math.radians(8)):
