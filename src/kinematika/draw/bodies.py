@@ -12,7 +12,7 @@ from typing import Any, Optional
 
 import numpy as np
 
-from .geometry import clip_line, clip_segment, convex_hull, perpendicular
+from .geometry import clip_line, clip_segment, convex_hull, overlap_along, perpendicular, points_to_data
 from ..model.wording import noun
 from .names import plain, shows_tag
 from .context import Context
@@ -205,9 +205,10 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
                 alpha=APART_FILL if s.apart else fill, width=0, zorder=DISC_FILL, moves_with=name)
         ctx.add("circle", [centre], r=s.radius, colour=body.colour, width=1.6 if gear or s.apart else 2.2,
                 dash=APART_DASH if s.apart else gear, zorder=3, gid=gid, moves_with=name)
-        for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
-            ctx.add("line", [centre - 0.8 * s.radius * d, centre + 0.8 * s.radius * d],
-                    width=1.0, colour=body.colour, alpha=0.4 if s.apart else 0.8, zorder=3, moves_with=name)
+        for arm in cross_hair(ctx, centre, s.radius):
+            ctx.add("line", arm, width=1.0, colour=body.colour, alpha=0.4 if s.apart else 0.8, zorder=3,
+                    moves_with=name, avoid=0.0)
+            ctx.avoid(*arm, width=CROSS_HAIR, centre=True)
         ctx.avoid(*_ring(centre, s.radius))
         ctx.area(*_ring(centre, s.radius))
         wrap = cable_wrap(ctx.scene, body, s)
@@ -233,6 +234,31 @@ def _moving_shape(ctx: Context, body: BodyView, s: ShapeView) -> None:
                 zorder=1, gid=gid, moves_with=name)
         ctx.avoid(*s.vertices)
         ctx.area(*s.vertices)
+
+
+CROSS_HAIR = 5.0     # points: the width a wheel's cross-hair is kept clear by a label as a bar's
+                    # is (`LabelBoard.avoid`'s width: `BAR_CLEAR` off its stroke)
+
+
+def cross_hair(ctx: Context, centre: np.ndarray, radius: float) -> list[np.ndarray]:
+    """A wheel's centre lines (its two spokes, which show it turn in an animation): four arms
+    from its centre, 0.8 of its radius long, less each arm that a vector's arrow runs along
+    (`geometry.overlap_along`) for more than a fifth of it: drawn under C5-1.7's v_C and
+    C5-E.4's v_U, leaving the centre along the horizontal diameter, the line vanished under
+    the arrow and the arrow's value lay on it; a teacher breaks the centre line where an
+    arrow leaves the centre along it (issue 30, twenty-ninth round (e)). Whole arms are kept
+    as a line through the centre (one mark for two opposite arms)."""
+    arms = []
+    near = points_to_data(CROSS_HAIR, ctx.view, getattr(ctx, "per_point", None))
+    for d in (np.array([1.0, 0.0]), np.array([0.0, 1.0])):
+        kept = [float(sign) for sign in (-1.0, 1.0)
+                if not any(overlap_along(a, b, centre, centre + sign * 0.8 * radius * d, near) > 0.16 * radius
+                           for a, b in ctx.arrows)]
+        if len(kept) == 2:
+            arms.append(np.array([centre - 0.8 * radius * d, centre + 0.8 * radius * d]))
+        elif kept:
+            arms.append(np.array([centre, centre + kept[0] * 0.8 * radius * d]))
+    return arms
 
 
 def _moving_curve(ctx: Context, body: BodyView, s: ShapeView, gid: str) -> None:

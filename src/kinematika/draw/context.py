@@ -11,7 +11,7 @@ import numpy as np
 from matplotlib.path import Path
 
 from ..joints.symbols import Mark, ring
-from .geometry import Box, clip_line
+from .geometry import Box, clip_line, points_to_data
 from .scene import Scene
 from .style import LABEL_SIZE
 
@@ -23,8 +23,9 @@ class Context:
 
     def __init__(self, scene: Scene, view: Box, still: bool = True, labels: bool = True,
                  words: bool = True, lang: Optional[str] = None,
-                 reach: Optional[Box] = None) -> None:
+                 reach: Optional[Box] = None, per_point: Optional[float] = None) -> None:
         self.scene, self.view, self.still = scene, view, still
+        self.per_point = per_point            # drawing units a point on the page, when the figure's scale is known
         self.reach = reach or view
         self.labels, self.words, self.lang = labels, words, lang
         self.size = scene.size
@@ -32,6 +33,11 @@ class Context:
         self.dim = scene.dim
         self.marks: list[Mark] = []
         self.owner: Optional[str] = None      # the body being drawn: the outlines `avoid` keeps are its
+        self.arrows: list[tuple[np.ndarray, np.ndarray]] = []   # the vectors' arrows to draw (start, end): what a wheel's cross-hair leaves room for
+
+    def pt(self, points: float) -> float:
+        """`points` on the page in the drawing's units (`geometry.points_to_data`)."""
+        return points_to_data(points, self.view, self.per_point)
 
     # what a joint's symbol asks of its figure (`joints.symbols`) ------------------------
     def centroid(self) -> np.ndarray:
@@ -108,15 +114,16 @@ class Context:
         return mark
 
     def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, bar: bool = False,
-              width: float = 0.0) -> None:
+              width: float = 0.0, centre: bool = False) -> None:
         """Keep labels off the polyline through these points (a single point too); `weight`
         says how bad covering it is (arrows and marks more than bars), `radius` (points) how
         far around each point the drawing reaches; drawn while a body is (`owner`), it is
         that body's outline (`bar`: its bar), which that body's name may reach across and
         no other label's leader crosses (`draw.labels`); `width` (points) how wide it is
-        drawn, when wider than a line (a bar)."""
+        drawn, when wider than a line (a bar); `centre`: a wheel's centre line, an outline
+        that a point's letter keeps off too (`draw.labels.Layout._lines_under`)."""
         owner = self.owner
-        role = "bar" if bar else "outline"
+        role = "bar" if bar else "centre" if centre else "outline"
         self.add("clear", [np.asarray(p, dtype=float) for p in polyline], avoid=weight,
                  radius=radius, width=width, zorder=0, **({"group": f"{role}:{owner}"} if owner else {}))
 

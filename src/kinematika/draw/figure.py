@@ -70,7 +70,7 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
     view = _limits(ax).grow(-CLIP_MARGIN * scene.size)   # what the axes show, less a margin
     cv = Canvas(ax, scene, view, labels=options.labels, words=not options.bare, lang=options.lang)
     paint(cv, picture(scene, view, drawn, labels=options.labels, words=not options.bare,
-                      lang=options.lang))
+                      lang=options.lang, per_point=per_point(ax)))
     if dimensions:
         paint_dimensions(ax, dimensions, scene.size, Box(*scene.box).centre)
         avoid_dimensions(cv.board, ax, dimensions, scene.size, Box(*scene.box).centre)
@@ -81,6 +81,12 @@ def _render(scene: Scene, options: DrawOptions) -> Figure:
         _title(fig, options.title or scene.name)
         _legend(fig, scene, drawn, notes, options.lang)
     return fig
+
+
+def per_point(ax: Any) -> float:
+    """The drawing's units a point on the page, as the axes `ax` show them (equal scale)."""
+    (x0, x1), pos = ax.get_xlim(), ax.get_position()
+    return abs(x1 - x0) / max(pos.width * ax.figure.get_figwidth() * 72.0, 1e-300)
 
 
 def zoomable(scene: Scene, options: Optional[DrawOptions] = None,

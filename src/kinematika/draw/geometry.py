@@ -130,3 +130,43 @@ def convex_hull(points: list[Vec]) -> Vec:
 
 def _turn(o, a, b) -> float:
     return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])
+
+
+AXES_POINTS = 72 * 0.96 * 8.0     # points across a figure's axes at the default width (`DrawOptions.width`, `figure.new_figure`)
+ALONG_ANGLE = 8.0                 # degrees: a line this near an arrow's direction runs along it
+
+
+def points_to_data(points: float, view: Box, per_point: Optional[float] = None) -> float:
+    """A length of `points` on the page in the drawing's units: at `per_point` (units a
+    point, the figure's own scale when it is known), else as a figure of the default width
+    shows `view` (an estimate, for telling whether two strokes touch)."""
+    if per_point:
+        return points * per_point
+    return points * max(view.width, view.height, 1e-300) / AXES_POINTS
+
+
+def overlap_along(p: Vec, q: Vec, a: Vec, b: Vec, near: float, angle: float = ALONG_ANGLE) -> float:
+    """How long the segment ab runs along the segment pq: the length of pq's stretch that ab
+    covers when ab is parallel to pq (within `angle` degrees) and both its ends' stretch lies
+    within `near` of pq's line; 0 otherwise (a line crossing an arrow, or beside it, is not
+    under it)."""
+    p, q, a, b = (np.asarray(x, dtype=float) for x in (p, q, a, b))
+    length = float(np.linalg.norm(q - p))
+    lab = float(np.linalg.norm(b - a))
+    if length <= 1e-300 or lab <= 1e-300:
+        return 0.0
+    d = (q - p) / length
+    if abs(float(d @ (b - a))) / lab < np.cos(np.radians(angle)):
+        return 0.0
+    n = np.array([-d[1], d[0]])
+    ta, tb = float((a - p) @ d), float((b - p) @ d)
+    lo, hi = max(min(ta, tb), 0.0), min(max(ta, tb), length)
+    if hi <= lo:
+        return 0.0
+    # the line ab's distance from pq's line over the shared stretch (its ends there)
+    sa, sb = float((a - p) @ n), float((b - p) @ n)
+    def across(t: float) -> float:
+        return sa + (sb - sa) * (t - ta) / (tb - ta) if tb != ta else sa
+    if max(abs(across(lo)), abs(across(hi))) > near:
+        return 0.0
+    return hi - lo

@@ -141,6 +141,7 @@ class LabelBoard:
     arrows: list[np.ndarray] = field(default_factory=list)  # a polygon's arrows, (start, end) data
     heads: list[np.ndarray] = field(default_factory=list)  # a mechanism's arrows: (start, end), data
     widths: list[float] = field(default_factory=list)      # each obstacle's drawn width, points (0: thin)
+    centres: list[int] = field(default_factory=list)       # the obstacles that are wheels' centre lines
 
     def add(self, anchor: Any, text: str, colour: str, priority: int, gid: str,
             prefer: Any = None, **kw: Any) -> None:
@@ -150,13 +151,16 @@ class LabelBoard:
                                  pref, **kw))
 
     def avoid(self, *polyline: Any, weight: float = 1.0, radius: float = 0.0, owner: str = "",
-              bar: bool = False, width: float = 0.0) -> None:
+              bar: bool = False, width: float = 0.0, centre: bool = False) -> None:
         """Keep labels off the drawn polyline through these points (a single point too);
         `weight` says how bad covering it is (arrows and marks more than bars), `radius`
         (points) how far around each point the drawing reaches (a marker's size), `owner`
         the body it outlines (its name's leader may cross it: `Layout._leader_over`), `bar`
         whether it is a bar (no leader crosses another body's: `BAR_CROSS`), `width` (points)
-        how wide it is drawn (a bar's, which a label keeps `BAR_CLEAR` from)."""
+        how wide it is drawn (a bar's, which a label keeps `BAR_CLEAR` from), `centre`
+        whether it is a wheel's centre line (a point's letter keeps off it too)."""
+        if centre:
+            self.centres.append(len(self.obstacles))
         self.obstacles.append((np.array([np.asarray(p, dtype=float) for p in polyline]), weight,
                                radius))
         self.owners.append(owner)
@@ -279,6 +283,7 @@ class Layout:
         widths = board.widths if len(board.widths) == len(board.obstacles) else [0.0] * len(board.obstacles)
         self.drawn, self.drawn_line, self.drawn_owner, self.drawn_width = _drawn_lines(
             board.obstacles, owners, ax.transData, widths)
+        self.centre_lines = np.isin(self.drawn_line, board.centres)   # wheels' centre lines among them
         grounds = board.grounds if len(board.grounds) == len(board.areas) else [False] * len(board.areas)
         self.areas = [(owner, Path(ax.transData.transform(poly))) for owner, poly in board.areas
                       if len(poly) >= 3]
@@ -580,8 +585,10 @@ class Layout:
         through it (`_block_edges`)."""
         if not len(self.drawn):
             return np.zeros(len(boxes))
+        through = self._centres_through(label)
         if label.gid.startswith(POINT_GIDS):
-            return LINE_OVER * self._block_edges(boxes + np.array([-1, -1, 1, 1]) * OBSTACLE_PAD * self.px)
+            return LINE_OVER * (self._block_edges(boxes + np.array([-1, -1, 1, 1]) * OBSTACLE_PAD * self.px)
+                                + self._centre_lines(boxes, through))
         owner = label_owner(label.gid)
         blocks = np.array([str(o).startswith(BLOCK) for o in self.drawn_owner], dtype=bool)
         other = (~np.isin(self.drawn_owner, [*self._piece(owner), ""]) & ~blocks if owner is not None
@@ -591,7 +598,7 @@ class Layout:
         for width in np.unique(self.drawn_width):     # a wide bar keeps `BAR_CLEAR` off its edge
             pad = OBSTACLE_PAD if named else max(OBSTACLE_PAD, width / 2 + BAR_CLEAR - PAD)
             grown = boxes + np.array([-1, -1, 1, 1]) * pad * self.px
-            at = self.drawn_width == width
+            at = (self.drawn_width == width) & ~through
             mine, theirs = at & ~other, at & other
             if mine.any():
                 cost += LINE_OVER * _lines_in_boxes(self.drawn[mine], self.drawn_line[mine], grown)
@@ -608,6 +615,31 @@ class Layout:
             if owner in body.split("+"):
                 piece.update(body.split("+"))
         return piece
+
+    def _centres_through(self, label: Label) -> np.ndarray:
+        """Which of the drawn lines are wheels' centre lines through the label's anchor (a
+        point or centre at the wheel's centre: C5-1.4's I_carrier, I_sun, I_ring at O, C1 at
+        pulley 1's centre): every box beside its anchor touches them, and held against it
+        they sent its label away from its point, on a leader."""
+        if not self.centre_lines.any():
+            return self.centre_lines
+        p = self.ax.transData.transform(np.asarray(label.anchor, dtype=float))
+        a, b = self.drawn[:, 0], self.drawn[:, 1]
+        ab = b - a
+        t = np.clip(np.einsum("ij,ij->i", p - a, ab) / np.maximum(np.einsum("ij,ij->i", ab, ab), 1e-300), 0.0, 1.0)
+        near = np.hypot(*(a + t[:, None] * ab - p).T) <= self.px
+        return self.centre_lines & near
+
+    def _centre_lines(self, boxes: np.ndarray, through: np.ndarray) -> np.ndarray:
+        """For each box of a point's letter, how many wheels' centre lines run through it. A
+        letter set on a pulley's diameter, away from its point, reads as the centre's or as
+        lost inside the disc: C5-1.5's T7 inside pulley 4, under C4, not at its contact (issue
+        30, twenty-ninth round (e)); beside its dot, clear of the line, it is read as the
+        point's."""
+        centres = self.centre_lines & ~through
+        if not centres.any():
+            return np.zeros(len(boxes))
+        return _lines_in_boxes(self.drawn[centres], self.drawn_line[centres], boxes)
 
     def _block_edges(self, boxes: np.ndarray) -> np.ndarray:
         """For each box of a point's letter, how many joints' blocks (a slider's: `BLOCK`

@@ -90,9 +90,9 @@ def _avoid(cv: Canvas, m: Mark, pts: np.ndarray) -> None:
     round (back to the first)."""
     if m.kind == "clear":
         role, _, owner = (m.group or "").partition(":")
-        outline = role in ("outline", "bar")
+        outline = role in ("outline", "bar", "centre")
         cv.board.avoid(*pts, weight=m.avoid, radius=m.radius, owner=owner if outline else "",
-                       bar=role == "bar", width=m.width)
+                       bar=role == "bar", width=m.width, centre=role == "centre")
     elif m.kind == "dot":
         cv.board.avoid(pts[0], weight=m.avoid, radius=m.radius)
     else:                                     # a joint's block is its symbol's (`labels.BLOCK`)

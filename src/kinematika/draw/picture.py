@@ -29,11 +29,16 @@ from .vectors import draw_vectors
 
 def picture(scene: Scene, view: Box, drawn: Optional[list] = None, still: bool = True,
             labels: bool = True, words: bool = True, lang: Optional[str] = None,
-            reach: Optional[Box] = None, results: bool = True) -> list[Mark]:
+            reach: Optional[Box] = None, results: bool = True,
+            per_point: Optional[float] = None) -> list[Mark]:
     """Every mark of the figure of `scene` showing `view`: the bodies, the joints, and with
     `results` the curvature circles, screw axes, instant centres and Kennedy lines and the
-    `drawn` arrows (`vectors.arrows`); colours are colours (a symbol's roles resolved)."""
-    ctx = Context(scene, view, still, labels, words, lang, reach)
+    `drawn` arrows (`vectors.arrows`); colours are colours (a symbol's roles resolved).
+    `per_point`: the drawing's units a point on the page, when the figure is made for a size
+    (what tells whether an arrow's stroke touches a line: `vectors.off_lines`)."""
+    ctx = Context(scene, view, still, labels, words, lang, reach, per_point)
+    if results:
+        ctx.arrows = [(a.start, a.end) for a in drawn or [] if a.drawn]
     draw_bodies(ctx)
     draw_joints(ctx)
     if results:

@@ -7,13 +7,15 @@ then says "enlarged". A zero vector gets no arrow, only its label (= 0) at the p
 """
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 from typing import Optional
 
 import numpy as np
+from matplotlib.path import Path
 
-from .geometry import unit
+from .geometry import overlap_along, perpendicular, points_to_data, unit
 from .context import Context
 from .scene import VectorView
 from .names import equation
@@ -23,6 +25,9 @@ ZERO = 1e-9          # relative to the largest vector of the kind
 SIDE = 4.0           # points between arrows along one line from one point
 SIDE_ANGLE = 6.0     # degrees: arrows closer than this in direction are side by side
 HALO = 1.6           # points of white casing each side of an arrow's stroke (`arrow_mark`)
+WIDTH = 2.2          # points: an arrow's stroke (`arrow_mark`)
+HEAD = 8.0           # points: about an arrow's head's length (`arrow_mark`'s size 15): what it may share with a line
+GAP = 2.0            # points of paper between a line and an arrow set beside it (`off_lines`)
 
 
 @dataclass
@@ -182,7 +187,7 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
     one point in nearly one direction are set side by side, and a zero vector gets its label at
     the point. The page moves an absolute vector's arrow over the sweep (`about`: the swept
     point, the symbol, whether it is drawn ending at its point)."""
-    shifts = side_shifts(drawn, ctx.size)
+    shifts = [side + off_lines(ctx, arrow, side) for arrow, side in zip(drawn, side_shifts(drawn, ctx.size))]
     for arrow, shift in zip(drawn, shifts):
         v = arrow.view
         colour = KIND_COLOURS[v.kind]
@@ -201,11 +206,97 @@ def draw_vectors(ctx: Context, drawn: list[Arrow]) -> None:
         ctx.add("arrow", [arrow.start, arrow.end], layer=layer, group=group, about=about,
                 **arrow_mark(arrow, v.key, shift))          # of no length: none drawn
         if arrow.drawn:
-            ctx.avoid(arrow.start, arrow.end, weight=3.0)
+            aside = perpendicular(unit(arrow.end - arrow.start)) * ctx.pt(shift)
+            ctx.avoid(arrow.start + aside, arrow.end + aside, weight=3.0)
             ctx.add("clear", [arrow.start, arrow.end], avoid=0.0, zorder=0, group=f"head:{v.key}")
             free, away = (arrow.start, arrow.start - arrow.end) if arrow.tip_at_point else \
                 (arrow.end, arrow.end - arrow.start)                # the label beyond the free end
-            ctx.label(free, text, colour, 1, v.key, away, layer=layer, group=group, about=said,
-                      shaft=np.array([arrow.start, arrow.end], dtype=float))
+            ctx.label(free + aside, text, colour, 1, v.key, away, layer=layer, group=group, about=said,
+                      shaft=np.array([arrow.start, arrow.end], dtype=float) + aside)
         else:
             ctx.label(arrow.start, text, colour, 1, v.key, layer=layer, group=group, about=said)
+
+
+def drawn_lines(ctx: Context) -> list[tuple[np.ndarray, float]]:
+    """The lines drawn so far that an arrow could lie along, each as its polyline (data; a
+    polygon's closed) and its width (points): bars, strands, belts, rims' chords, the
+    ground's edges, joints' blocks, construction lines — no arrow, dot, circle or text."""
+    out = []
+    for m in ctx.marks:
+        if m.kind not in ("line", "polygon") or m.width <= 0 or m.colour == "none":
+            continue
+        pts = np.asarray(m.points, dtype=float)
+        out.append((np.vstack([pts, pts[:1]]) if m.kind == "polygon" else pts, float(m.width)))
+    return out
+
+
+def _under(p: np.ndarray, q: np.ndarray, lines: list, view, per_point: Optional[float] = None) -> tuple[float, float]:
+    """How long the arrow pq runs along the lines (`geometry.overlap_along`: the longest
+    stretch one line shares with it, near enough to touch its stroke), and the widest such
+    line's width (points)."""
+    longest, wide = 0.0, 0.0
+    for pts, width in lines:
+        near = points_to_data(width / 2 + WIDTH / 2 + HALO, view, per_point)
+        for a, b in itertools.pairwise(pts):
+            run = overlap_along(p, q, a, b, near)
+            if run > 0:
+                longest, wide = max(longest, run), max(wide, width)
+    return longest, wide
+
+
+def off_lines(ctx: Context, arrow: Arrow, side: float = 0.0) -> float:
+    """The sideways shift (points, along the arrow's left normal) that sets `arrow` beside
+    the lines it would run along for more than its head's length (`HEAD`), parallel to
+    them, clear of their stroke (`GAP`): drawn over C5-2.2's chassis bars (v_O, v_P),
+    C5-1.5's strands (v_T2, v_K), C5-E.6's chain and frame tube (v_H), the line vanished
+    under the arrow and its value read as written on the line, white casing or not (issue
+    30, twenty-ninth round (e): round 27 (f) drew it over the bar, cased). The arrow keeps
+    its point's place along the line, beside the point's dot, on the side where it lies
+    along fewer lines, away from the mechanism when both are clear, farther out (up to three
+    times) when a line beside the first one is in the way; 0 when it runs along
+    none (a wheel's cross-hair leaves room for it: `bodies.cross_hair`)."""
+    if not arrow.drawn:
+        return 0.0
+    lines = drawn_lines(ctx)
+    start, end = arrow.start, arrow.end
+    n = perpendicular(unit(end - start))
+    run, wide = _under(start, end, lines, ctx.view, ctx.per_point)
+    if run <= ctx.pt(HEAD):
+        return 0.0
+    away = wide / 2 + WIDTH / 2 + HALO + GAP
+    best: tuple[float, float] = (math.inf, 0.0)
+    signs = sorted((1.0, -1.0), key=lambda k: -k * float(n @ ((start + end) / 2 - ctx.centroid())))
+    for reach in (1.0, 1.5, 2.0, 3.0):      # farther out when a line beside it (a block's edge) is in the way
+        for sign in signs:
+            shift = sign * reach * away
+            off = n * ctx.pt(side + shift)
+            left, _ = _under(start + off, end + off, lines, ctx.view, ctx.per_point)
+            if reach == 1.0 and left < best[0] - 1e-9 * ctx.size:
+                best = (left, shift)
+            if left <= ctx.pt(HEAD) and (reach == 1.0 or not _jumps(start, end, n * ctx.pt(shift), lines, ctx)):
+                return shift
+    return best[1]           # no side clear: the side it shares least with
+
+
+def _jumps(start: np.ndarray, end: np.ndarray, off: np.ndarray, lines: list, ctx: Context) -> bool:
+    """Whether setting the arrow start→end `off` sideways takes it across a line parallel to
+    it (a guide's edge, a wall): beyond it, it would lie in the ground or on another body. A
+    block it starts in is left behind, not jumped (C5-1.5's v_K, set beside its strand and
+    its block's edge, clear of both)."""
+    length = float(np.linalg.norm(off))
+    if length <= 0:
+        return False
+    d, n = unit(end - start), off / length
+    for pts, width in lines:
+        if np.allclose(pts[0], pts[-1]) and len(pts) > 3 and Path(pts).contains_point((float(start[0]), float(start[1]))):
+            continue         # a block the arrow starts in (its point's slider): it leaves it anyway
+        for a, b in itertools.pairwise(pts):
+            if np.linalg.norm(b - a) <= 0 or abs(float(unit(b - a) @ d)) < math.cos(math.radians(8)):
+                continue
+            ta, tb = sorted((float((a - start) @ d), float((b - start) @ d)))
+            if min(tb, float(np.linalg.norm(end - start))) - max(ta, 0.0) <= ctx.pt(HEAD):
+                continue
+            across = float((0.5 * (a + b) - start) @ n)
+            if ctx.pt(width / 2 + WIDTH / 2 + HALO) < across < length:
+                return True
+    return False

@@ -75,19 +75,25 @@ class Wheel(JointKind):
         return Holonomic(lambda q, dq: [], lambda q: [])
 
     def symbol(self, view: JointView, ctx: DrawContext) -> list[symbols.Mark]:
-        """A knife edge seen from above: a narrow dark wheel along its rolling direction."""
+        """A knife edge seen from above: a narrow wheel along its rolling direction, outlined
+        in ink and filled grey (`TYRE`). Filled black, it hid the first half of the velocity
+        that starts at its centre and runs along it, white casing or not: C5-2.1's v_C1,
+        C5-2.2's v_C1, v_C2 and v_C4 read as starting at the wheel's edge, half hidden (issue
+        30, twenty-ninth round (e))."""
         from . import symbols     # drawing only (start-up)
 
         if view.at is None or view.along is None:
             return []
         wheel = symbols.rectangle(np.asarray(view.at, dtype=float), np.asarray(view.along, dtype=float),
                                   0.10 * ctx.size, 0.03 * ctx.size)
-        return [symbols.Mark("polygon", wheel, "ink", "ink", 1.0, zorder=5, gid=f"joint:{view.id}",
+        return [symbols.Mark("polygon", wheel, "ink", TYRE, 1.2, zorder=5, gid=f"joint:{view.id}",
                              moves_with=symbols.mover(view, ctx))]
 
     def add(self, m: Mechanism, a: str, b: str, at: str, along: Any, id: Optional[str] = None) -> str:
         """A knife edge: point `at` of `b` moves relative to `a` only along `along`, fixed in `b`."""
         return m.joint(self.name, a, b, id, at=at, along=along)
 
+
+TYRE = "#90a4ae"     # a knife edge's fill: a tyre's grey, dark enough to read as a wheel, light enough under an arrow
 
 KIND = Wheel()
