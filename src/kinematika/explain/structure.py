@@ -10,7 +10,7 @@ from ..model.body_shapes import Circle, Disc
 from ..point_pair import PointPair
 from .freedom import by_data, dof_by_data
 from .context import Ctx
-from .kinds import kind_key, knife_edge, on_fixed_line, rolls, welds
+from .kinds import crossed_by_a_slot, kind_key, knife_edge, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
 from .order import Step, as_found, merge_vehicles       # the order lists the steps as the text does them
 
@@ -20,16 +20,26 @@ def _points_on(ctx: Ctx, body: str) -> list[str]:
     points, then the contact points of its touching joints (J, K, T1 …, `ctx.contact`), each
     once — the same for every body (twentieth round g: C5-1.6's moving pulley listed T2, the
     model's point, and the fixed pulley left out T1, its contact with the belt)."""
-    names = list(ctx.model.bodies[body].points)
+    parts = [body] + (welded_to_frame(ctx) if body == ctx.frame else [])
+    names = [p for part in parts for p in ctx.model.bodies[part].points]
     if ctx.planar:
         names += [ctx.contact(j) for j in ctx.model.joints
-                  if getattr(j.kind, "touches", False) and body in (j.a, j.b)]
-    return list(dict.fromkeys(names))
+                  if getattr(j.kind, "touches", False) and (j.a in parts or j.b in parts)]
+    slid = _sliding_points(ctx, parts)
+    return [p for p in dict.fromkeys(names) if p not in slid]
+
+
+def _sliding_points(ctx: Ctx, parts: list[str]) -> set[str]:
+    """The points that slide along a line of `parts` (a slot's or a sliding contact's point,
+    `crossed_by_a_slot`, on the joint's other body): the other body's points, not the line's
+    (twenty-ninth round (b): C5-1.2's ground row listed J, the bar's end that slides on it)."""
+    return {j.at for j in ctx.model.joints if j.at and crossed_by_a_slot(j) and j.a in parts
+            and j.b not in parts and j.at in ctx.model.bodies[j.b].points}
 
 
 def _points_cell(ctx: Ctx, body: str) -> list:
     """A body's cell of the points column. The fixed body lists a point it carries only as the
-    contact of a wheel or rolling joint as the contact it is, "contacts of the wheels at C1,
+    contact of a wheel or rolling joint as the contact it is, "contact points under C1,
     C2, F" (twenty-third round (a): C5-2.1's ground row "C1, C2, F" was read as the wheels'
     centres, which they also name), whether or not the model lists the point on it (C5-2.2's
     ground lists none; its row was empty); its own points, and every other body's, by name."""
@@ -62,8 +72,9 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
+    # a body welded to the frame is the frame: its row (`_frame_cell`), never one of its own
     bodies = [[Name(name, "index"), _shaped(ctx, name, _body_cell(ctx, name)), _points_cell(ctx, name)]
-              for name in sorted(model.bodies, key=lambda n: numbers[n])]
+              for name in sorted(model.bodies, key=lambda n: numbers[n]) if name not in welded_to_frame(ctx)]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points")], bodies))
     sec.add(msg("structure.subscripts",          # ω_t: which body (render); a part welded to the frame has no rate
                 bodies=[b for b in ctx.model.bodies if b not in welded_to_frame(ctx)]))
@@ -193,14 +204,27 @@ def _body_cell(ctx: Ctx, name: str):
     keeps its own name on the whole page (C5-1.1's and C5-1.5's ceiling, 001's *bastidor*) and
     is marked fixed, "*techo* (fijo)": the text says "respecto del *techo*" (twenty-seventh round
     (e): "*bastidor* (fijo: el *suelo*)" read as two bodies, and a ceiling's page has no floor)."""
-    if name == ctx.frame and ground_part(ctx) and not _named_ground(ctx, name):
-        return msg("structure.frame_ground", body=Name(name, "body", bare=True),
-                   ground=Name(name, "body", bare=True, reference=True))
     if name == ctx.frame:
-        return msg("structure.frame_named", body=Name(name, "body", bare=True))
+        return _frame_cell(ctx, name)
     if ctx.fixed(name):
         return msg("structure.fixed_part", body=Name(name, "body", bare=True), frame=body(ctx.frame))
     return Name(name, "body", bare=True)
+
+
+def _frame_cell(ctx: Ctx, name: str) -> Msg:
+    """The frame's cell, with the parts welded to it named in it ("*ground* (fixed), with the
+    *left plane* and the *right plane*"): they are the frame (its lines, its axles), one row
+    with its points (`_points_on`), never bodies of their own "fixed to the ground"
+    (twenty-ninth round (b): C5-1.2's planes were bodies 2 and 3)."""
+    if ground_part(ctx) and not _named_ground(ctx, name):
+        cell = msg("structure.frame_ground", body=Name(name, "body", bare=True),
+                   ground=Name(name, "body", bare=True, reference=True))
+    else:
+        cell = msg("structure.frame_named", body=Name(name, "body", bare=True))
+    welded = welded_to_frame(ctx)
+    if not welded:
+        return cell
+    return msg("structure.frame_parts", body=cell, parts=names(welded, "body"), parts_n=len(welded))
 
 
 def _where(ctx: Ctx, j) -> Inline | str:

@@ -101,13 +101,15 @@ structure-welded = { $bodies } { $bodies_n ->
        *[other] en formen part i no es mouen
     }; tots els seus punts tenen velocitat i acceleració nul·les.
 structure-contacts_wheel = { $points_n ->
-        [one] contacte d’una roda a { $points }
-       *[other] contactes de les rodes a { $points }
+        [one] punt de contacte sota { $points }
+       *[other] punts de contacte sota { $points }
     }
 structure-contacts_rolling = { $points_n ->
         [one] punt de contacte { $points }
        *[other] punts de contacte { $points }
     }
+# the frame's row names the parts welded to it: they are the frame (twenty-ninth round b)
+structure-frame_parts = { $body }, amb { $parts }
 structure-fixed_part = { $body } (fix a { $frame })
 structure-dof = El mecanisme té { $dof ->
         [one] un grau

@@ -68,13 +68,15 @@ structure-welded = { $bodies } { $bodies_n ->
        *[other] they are part of it and do not move; all their
     } points have zero velocity and acceleration.
 structure-contacts_wheel = { $points_n ->
-        [one] contact of a wheel at { $points }
-       *[other] contacts of the wheels at { $points }
+        [one] contact point under { $points }
+       *[other] contact points under { $points }
     }
 structure-contacts_rolling = { $points_n ->
         [one] contact point { $points }
        *[other] contact points { $points }
     }
+# the frame's row names the parts welded to it: they are the frame (twenty-ninth round b)
+structure-frame_parts = { $body }, with { $parts }
 structure-fixed_part = { $body } (fixed to { $frame })
 structure-dof = The mechanism has { $dof ->
         [one] one degree

@@ -74,13 +74,15 @@ structure-welded = { $bodies } { COUNT($bodies) ->
         }
     }; todos sus puntos tienen velocidad y aceleración nulas.
 structure-contacts_wheel = { $points_n ->
-        [one] contacto de una rueda en { $points }
-       *[other] contactos de las ruedas en { $points }
+        [one] punto de contacto bajo { $points }
+       *[other] puntos de contacto bajo { $points }
     }
 structure-contacts_rolling = { $points_n ->
         [one] punto de contacto { $points }
        *[other] puntos de contacto { $points }
     }
+# the frame's row names the parts welded to it: they are the frame (twenty-ninth round b)
+structure-frame_parts = { $body }, con { $parts }
 structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->
         [one] un grado

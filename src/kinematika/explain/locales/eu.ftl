@@ -68,13 +68,15 @@ structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n 
        *[other] haien
     } puntu guztien abiadura eta azelerazioa nuluak dira.
 structure-contacts_wheel = { $points_n ->
-        [one] { $points } (gurpil baten kontaktu-puntua)
-       *[other] { $points } (gurpilen kontaktu-puntuak)
+        [one] { $points } puntuaren azpiko kontaktu-puntua
+       *[other] { $points } puntuen azpiko kontaktu-puntuak
     }
 structure-contacts_rolling = { $points_n ->
         [one] { $points } (kontaktu-puntua)
        *[other] { $points } (kontaktu-puntuak)
     }
+# the frame's row names the parts welded to it: they are the frame (twenty-ninth round b)
+structure-frame_parts = { $body }, { $parts } barne
 structure-fixed_part = { $body } ({ $frame } solidoari zurrunki lotuta: finkoa)
 structure-dof = Mekanismoak { $dof ->
         [one] askatasun-gradu bat du
