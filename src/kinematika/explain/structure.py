@@ -189,6 +189,9 @@ def _shaped(ctx: Ctx, name: str, cell: Any) -> Any:
     and the Data's shape table do not; every shape stays stated there (`data.shape_rows`)."""
     round_ = [(s, inst) for s, inst in zip(ctx.model.bodies[name].shapes, ctx.inst.shapes.get(name, []))
               if isinstance(s, (Circle, Disc))]
+    if len(round_) > 1:     # C5-E.1: "two welded wheels of radii R and 2R", not a list of circles
+        return msg("structure.shaped_welded", body=cell, n=len(round_),
+                   radii=Names([Value(ctx.clean(shape.radius, "len"), "len") for _, shape in round_]))
     for spec, shape in round_:
         cell = msg("structure.shaped", body=cell, shape=msg(f"shape.{type(spec).__name__.lower()}"),
                    radius=Value(ctx.clean(shape.radius, "len"), "len"))

@@ -86,6 +86,11 @@ structure-subscript_rel = { $sym } és { $kind ->
        *[other] de { $other }
     } (dos noms units per «rel», relatiu a: el primer sòlid respecte del segon)
 structure-shaped = { $body }, { $shape } de radi { $radius }
+# a body with several round shapes: its welded wheels, said once (twenty-ninth round b)
+structure-shaped_welded = { $body }, { $n ->
+        [2] dues
+       *[other] { $n }
+    } rodes solidàries de radis { $radii }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
         [yes] {""}

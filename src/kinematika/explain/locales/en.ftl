@@ -53,6 +53,11 @@ structure-subscript_rel = { $sym } is the { $kind ->
        *[rate] angular velocity of { $body }
     } relative to { $other } (two names joined by “rel”: the first body relative to the second)
 structure-shaped = { $body }, { $shape } of radius { $radius }
+# a body with several round shapes: its welded wheels, said once (twenty-ninth round b)
+structure-shaped_welded = { $body }, { $n ->
+        [2] two
+       *[other] { $n }
+    } welded wheels of radii { $radii }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
         [yes] {""}

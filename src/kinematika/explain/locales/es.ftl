@@ -53,6 +53,11 @@ structure-subscript_rel = { $sym } es la { $kind ->
        *[rate] velocidad angular de { $body }
     } respecto de { $other } (dos nombres unidos por «rel»: el primer sólido respecto del segundo)
 structure-shaped = { $body }, { $shape } de radio { $radius }
+# a body with several round shapes: its welded wheels, said once (twenty-ninth round b)
+structure-shaped_welded = { $body }, { $n ->
+        [2] dos
+       *[other] { $n }
+    } ruedas solidarias de radios { $radii }
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
         [yes] {""}

@@ -53,6 +53,11 @@ structure-subscript_rel = { $sym } { $body } solidoaren { $kind ->
        *[rate] abiadura angeluarra
     } da { $other } solidoarekiko («rel» hitzaz lotutako bi izen: lehen solidoa bigarrenarekiko)
 structure-shaped = { $body }, { $radius } erradioko { $shape }
+# a body with several round shapes: its welded wheels, said once (twenty-ninth round b)
+structure-shaped_welded = { $body }, { $radii } erradioko { $n ->
+        [2] bi
+       *[other] { $n }
+    } gurpil solidario
 # the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
 structure-frame_ground = { $body }{ SAME($body, $ground) ->
         [yes] {""}
