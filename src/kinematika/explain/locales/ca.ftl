@@ -1151,7 +1151,11 @@ idle-unused = { $bodies } no { $count ->
         [one] la seva velocitat angular
        *[other] les seves velocitats angulars
     }.
-how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa component de la velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
+how-tangent = (es manté { WORD($way) ->
+        [vertical] vertical
+        [horizontal] horitzontal
+       *[other] paral·lel a si mateix
+    }, tangent a { $a } i a { $b }: es trasllada, i tots els seus punts tenen la mateixa velocitat)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } es mantenen sempre a una altura igual al radi de la seva roda sobre el terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
 how-translates_always = (es trasllada en tot instant, com s’ha vist a les velocitats)

@@ -812,7 +812,11 @@ idle-unused = { $bodies } { $count ->
         [one] its angular velocity
        *[other] their angular velocities
     }.
-how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity component across it: no swinging, it translates)
+how-tangent = (it stays { WORD($way) ->
+        [vertical] vertical
+        [horizontal] horizontal
+       *[other] parallel to itself
+    }, tangent to { $a } and { $b }: it translates, and all its points have the same velocity)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)
 how-translates_always = (it translates at every instant, as the velocities showed)

@@ -763,7 +763,11 @@ idle-unused = { $bodies } no { $count ->
         [one] su velocidad angular
        *[other] sus velocidades angulares
     }.
-how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma componente de la velocidad perpendicular a él: sin movimiento pendular, se traslada)
+how-tangent = (se mantiene { WORD($way) ->
+        [vertical] vertical
+        [horizontal] horizontal
+       *[other] paralelo a sí mismo
+    }, tangente a { $a } y a { $b }: se traslada, y todos sus puntos tienen la misma velocidad)
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } se mantienen siempre a una altura igual al radio de su rueda sobre el suelo plano, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 how-translates_always = (se traslada en todo instante, como se ha visto en las velocidades)

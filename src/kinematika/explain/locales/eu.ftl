@@ -686,7 +686,11 @@ idle-unused = { $bodies } ez { $count ->
         [one] haren abiadura angeluarra
        *[other] haien abiadura angeluarrak
     } behar.
-how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiaduraren osagai bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
+how-tangent = ({ WORD($way) ->
+        [vertical] bertikal
+        [horizontal] horizontal
+       *[other] bere buruarekiko paralelo
+    } mantentzen da, { $a } eta { $b } solidoekiko ukitzaile: traslatzen da, eta bere puntu guztiek abiadura bera dute)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuetako bakoitza bere gurpilaren erradioaren altueran dago lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 how-translates_always = (une oro traslatzen da, abiaduretan ikusi den bezala)
