@@ -623,6 +623,9 @@ centres-intro_named_rel = El símbol I, amb el nom d’un sòlid ({ $pair }), de
     }, i, amb dos noms units per «rel» (relatiu a), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
+# a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
+centre-joint-revolute_fixed = l’eix de l’articulació fixa { $joint }, un centre permanent,
+centre-joint-revolute_tied = el punt { $joint }, on { $body } és lligat a { $frame }, un centre permanent,
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
 centre-joint-gear = el contacte { $joint } de les circumferències primitives,
 centre-joint-prismatic = l’enllaç és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,

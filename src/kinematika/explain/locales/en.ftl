@@ -482,6 +482,9 @@ centres-intro_named = The symbol I with a body's name ({ $pair }) names the inst
 centres-intro_named_rel = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }, and with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin { $joint },
+# a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
+centre-joint-revolute_fixed = the fixed pin { $joint }, a permanent centre,
+centre-joint-revolute_tied = the point { $joint } where { $body } is tied to { $frame }, a permanent centre,
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),
 centre-joint-gear = the contact { $joint } of the pitch circles,
 centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the instant centre is perpendicular to the guide,

@@ -457,6 +457,9 @@ centres-intro_named = El símbolo I, con el nombre de un sólido ({ $pair }), de
 centres-intro_named_rel = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }, y, con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = el eje de la articulación { $joint },
+# a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
+centre-joint-revolute_fixed = el eje de la articulación fija { $joint }, un centro permanente,
+centre-joint-revolute_tied = el punto { $joint }, donde { $body } está atado a { $frame }, un centro permanente,
 centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamiento),
 centre-joint-gear = el contacto { $joint } de las circunferencias primitivas,
 centre-joint-prismatic = el par es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,

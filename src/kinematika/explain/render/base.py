@@ -1098,7 +1098,10 @@ class Renderer(ABC):
         if c.how == "check":
             return self.message(Msg("centre.check", self.field_args(c, name)))
         if c.how == "joint":
-            why = Msg(f"centre.joint.{c.joint_type}", {"joint": Name(c.via[0], "joint")})
+            moving = b if a == self.doc_frame() else a
+            why = Msg(f"centre.joint.{c.joint_type}", {"joint": Name(c.via[0], "joint"),
+                                                        "body": Name(moving, "body"),
+                                                        "frame": self.frame_name(a if moving == b else b)})
         elif c.how == "weld":
             assert c.same is not None, "a weld's note has the centre it shares (centres.weld)"
             x, other = c.same["pair"]
