@@ -199,14 +199,11 @@ def _shaped(ctx: Ctx, name: str, cell: Any) -> Any:
 
 
 def _body_cell(ctx: Ctx, name: str):
-    """The structure table's body: the frame marked fixed — or, when the ground is named
-    after a part of it (`ground_part`: C5-1.6's *polea finkoa*), marked with the ground's word
-    the text later writes for the reference, "*polea finkoa* (*lurra*)" — and a body welded
-    to it marked part of it (`welded_to_frame`). A part with a shape is the ground, "*polea
-    finkoa* (*lurra*)", as the text names the reference of a motion there; a shapeless frame
-    keeps its own name on the whole page (C5-1.1's and C5-1.5's ceiling, 001's *bastidor*) and
-    is marked fixed, "*techo* (fijo)": the text says "respecto del *techo*" (twenty-seventh round
-    (e): "*bastidor* (fijo: el *suelo*)" read as two bodies, and a ceiling's page has no floor)."""
+    """The structure table's body: the frame by its own name, marked fixed, with the parts
+    welded to it (`_frame_cell`); the text names it so wherever it is the reference of a
+    motion, "relative to the *fixed pulley*" (twenty-ninth round (b): "*polea fija* (*suelo*)"
+    and "respecto del *suelo*" sent the reader after a ground the problem does not have; the
+    twenty-seventh round (e) had said it for a shapeless frame, "*bastidor* (fijo)")."""
     if name == ctx.frame:
         return _frame_cell(ctx, name)
     if ctx.fixed(name):
@@ -219,11 +216,7 @@ def _frame_cell(ctx: Ctx, name: str) -> Msg:
     *left plane* and the *right plane*"): they are the frame (its lines, its axles), one row
     with its points (`_points_on`), never bodies of their own "fixed to the ground"
     (twenty-ninth round (b): C5-1.2's planes were bodies 2 and 3)."""
-    if ground_part(ctx) and not _named_ground(ctx, name):
-        cell = msg("structure.frame_ground", body=Name(name, "body", bare=True),
-                   ground=Name(name, "body", bare=True, reference=True))
-    else:
-        cell = msg("structure.frame_named", body=Name(name, "body", bare=True))
+    cell = msg("structure.frame_named", body=Name(name, "body", bare=True))
     welded = welded_to_frame(ctx)
     if not welded:
         return cell
@@ -509,25 +502,3 @@ def values_table(ctx: Ctx, accelerations: bool = True) -> Table:
             + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in ctx.model.moving_bodies
             if not ctx.fixed(b)]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)
-
-def _named_ground(ctx: Ctx, name: str) -> bool:
-    """Whether the model already calls its ground by the ground's word in some language
-    (C5-E.6's *lurra*, *el terra*): its row then needs no "(*lurra*)" after it."""
-    from ..model.wording import noun
-    from .catalogue import catalogue
-
-    return any(noun(ctx.model.wording.body(name, lang), lang).casefold()
-               == catalogue(lang).format("ground-word", {}).casefold() for lang in ("en", "es", "ca", "eu"))
-
-
-def ground_part(ctx: Ctx) -> bool:
-    """Whether the model names its ground after a part of it that carries a shape (the fixed
-    pulley of C5-1.6, a track): the text names the part where it acts (a contact, the
-    structure's table) and says the ground where it is the reference of a motion, as the notes
-    do ("el CIR del braç respecte al terra és el centre O de la politja fixa"). A ground with
-    no shape of its own keeps its one name on the page, whatever is welded to it (sixth round:
-    C5-1.5's ceiling, *sabaia*, was also "*lurra* solidoarekiko" beside ω_blokea = ω_sabaia;
-    its tied strand is a body named on its own, *1. kable-zatia*). The structure's table
-    introduces that word at the part (`_body_cell`), so that "relative to the ground" later
-    names a body the page has listed."""
-    return bool(ctx.planar and ctx.inst.shapes.get(ctx.frame))

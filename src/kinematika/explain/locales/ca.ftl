@@ -91,13 +91,11 @@ structure-shaped_welded = { $body }, { $n ->
         [2] dues
        *[other] { $n }
     } rodes solidàries de radis { $radii }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
-structure-frame_ground = { $body }{ SAME($body, $ground) ->
-        [yes] {""}
-       *[no] {" "}({ $ground })
-    }
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
-structure-frame_named = { $body } (fix)
+structure-frame_named = { $body } ({ GENDER($body) ->
+        [f] fixa
+       *[m] fix
+    })
 structure-welded = { $bodies } { $bodies_n ->
         [one] és fix a
        *[other] són fixos a
@@ -1307,8 +1305,6 @@ check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la
 driver-slide = Dada: la velocitat de lliscament a l’enllaç prismàtic { $joint } és { $value }.
 driver-slide_accel = Dada: l’acceleració de lliscament a l’enllaç prismàtic { $joint } és { $value }.
 centre-line-normal = la normal comuna al contacte { $point } (els sòlids llisquen l’un sobre l’altre: cap velocitat relativa segons ella)
-# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
-ground-word = el terra
 # un CIR a partir de dues velocitats paral·leles i perpendiculars a la recta dels seus punts (la construcció proporcional dels apunts)
 centre-parallel-between = els punts { $p } i { $q } { ELISION($body) ->
         [vowel] d’{ $body }

@@ -58,11 +58,6 @@ structure-shaped_welded = { $body }, { $n ->
         [2] two
        *[other] { $n }
     } welded wheels of radii { $radii }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
-structure-frame_ground = { $body }{ SAME($body, $ground) ->
-        [yes] {""}
-       *[no] {" "}({ $ground })
-    }
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
 structure-frame_named = { $body } (fixed)
 structure-welded = { $bodies } { $bodies_n ->
@@ -917,8 +912,6 @@ check-quick = Time ratio of the quick return: { $lever } is at an end of its swi
 driver-slide = Given: the sliding velocity in the prismatic pair { $joint } is { $value }.
 driver-slide_accel = Given: the sliding acceleration in the prismatic pair { $joint } is { $value }.
 centre-line-normal = the common normal at the contact { $point } (the bodies slide on each other there: no relative velocity along it)
-# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
-ground-word = ground
 # a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
 centre-parallel-between = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the instant centre, and these two have opposite senses, so the instant centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
 centre-parallel-outside = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the instant centre, and these two have the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:

@@ -58,13 +58,11 @@ structure-shaped_welded = { $body }, { $n ->
         [2] dos
        *[other] { $n }
     } ruedas solidarias de radios { $radii }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
-structure-frame_ground = { $body }{ SAME($body, $ground) ->
-        [yes] {""}
-       *[no] {" "}({ $ground })
-    }
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
-structure-frame_named = { $body } (fijo)
+structure-frame_named = { $body } ({ GENDER($body) ->
+        [f] fija
+       *[m] fijo
+    })
 structure-welded = { $bodies } { COUNT($bodies) ->
         [many] están { GENDER($bodies) ->
             [f] fijadas
@@ -856,8 +854,6 @@ check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extr
 driver-slide = Dato: la velocidad de deslizamiento en el par prismático { $joint } es { $value }.
 driver-slide_accel = Dato: la aceleración de deslizamiento en el par prismático { $joint } es { $value }.
 centre-line-normal = la normal común en el contacto { $point } (los sólidos deslizan uno sobre otro: ninguna velocidad relativa según ella)
-# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
-ground-word = el suelo
 # un CIR a partir de dos velocidades paralelas y perpendiculares a la recta de sus puntos (la construcción proporcional de los apuntes)
 centre-parallel-between = los puntos { $p } y { $q } de { $body } se mueven, respecto de { $frame }, con { $sp } = { $vp } y { $sq } = { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $q }:
 centre-parallel-outside = los puntos { $p } y { $q } de { $body } se mueven, respecto de { $frame }, con { $sp } = { $vp } y { $sq } = { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $q }:

@@ -58,11 +58,6 @@ structure-shaped_welded = { $body }, { $radii } erradioko { $n ->
         [2] bi
        *[other] { $n }
     } gurpil solidario
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
-structure-frame_ground = { $body }{ SAME($body, $ground) ->
-        [yes] {""}
-       *[no] {" "}({ $ground })
-    }
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
 structure-frame_named = { $body } (finkoa)
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
@@ -411,8 +406,8 @@ centres-intro_named_rel = I ikurrak, solido baten izena azpiindize duela, solido
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
 # a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
-centre-joint-revolute_fixed = { $joint } giltzadura finkoaren ardatza, zentro iraunkorra,
-centre-joint-revolute_tied = { $joint } puntua, { $body } { $frame } solidoari lotuta dagoen lekua, zentro iraunkorra,
+centre-joint-revolute_fixed = { $joint } giltzadura finkoaren ardatza, biraketa-zentro iraunkorra,
+centre-joint-revolute_tied = { $joint } puntua, { $body } { $frame } solidoari lotuta dagoen lekua, biraketa-zentro iraunkorra,
 centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
 centre-joint-gear = zirkunferentzia primitiboen { $joint } kontaktua,
 centre-joint-prismatic = lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta BZIa gidaren perpendikularrean dago,
@@ -779,8 +774,6 @@ check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulu
 driver-slide = Datua: { $joint } lotura prismatikoko irristatze-abiadura { $value } da.
 driver-slide_accel = Datua: { $joint } lotura prismatikoko irristatze-azelerazioa { $value } da.
 centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gainean irristatzen dira: ez dago abiadura erlatiborik haren norabidean)
-# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
-ground-word = lurra
 # zentro bat, bi puntuen zuzenarekiko perpendikularrak diren bi abiadura paralelotatik (apunteen eraikuntza proportzionala)
 centre-parallel-between = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, BZIrainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, BZIa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
 centre-parallel-outside = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, BZIrainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:

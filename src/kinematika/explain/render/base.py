@@ -593,8 +593,6 @@ class Renderer(ABC):
     # the model's words and notation -----------------------------------------------------------
     def called(self, n: Name) -> str:
         """A body's name in the reader's language (the model's `names`), else the model's."""
-        if n.kind == "body" and n.reference and self.doc.ground_part and self.cat.has("ground.word"):
-            return self.cat.get("ground.word")           # the reference, named as the notes name it
         if n.kind == "body":
             return self.wording.body(n.text, self.lang)
         if n.kind == "joint":                            # the model's name, else its point or bodies
