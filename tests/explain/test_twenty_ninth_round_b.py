@@ -183,3 +183,19 @@ def test_welded_wheels_are_said_once(lang: str) -> None:
     word = {"en": "welded", "es": "solidarias", "ca": "solidàries", "eu": "solidario"}[lang]
     assert word in row, row
     assert not re.search(r"(track|pista cilíndrica|zilindrikoaren barruan biratzen dira \(), horizont", page)
+
+
+GROUND = {"en": "ground", "es": "suelo", "ca": "terra", "eu": "lurra"}
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_a_fixed_body_is_the_reference_by_its_own_name(name: str, lang: str) -> None:
+    """A fixed body with its own name (C5-1.6's fixed pulley, C5-E.1's track) is the reference of
+    the motions by that name ("relative to the *fixed pulley*"): no "(*ground*)" beside it and
+    no *ground* the problem does not have."""
+    m = model(name)
+    spelt = (((m.get("names") or {}).get(lang) or {}).get("bodies") or {}).get("ground", "ground")
+    if GROUND[lang] in spelt.split():
+        return
+    page = rendered(name, lang)
+    assert f"*{GROUND[lang]}*" not in page and f"*el {GROUND[lang]}*" not in page, spelt

@@ -782,11 +782,11 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
        *[other] de { $frame }
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
-composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { WORD($kind) ->
+composition-slide_seen = { $body } llisca al llarg de { $frame } sense girar respecte d’ell, i per tant tots els seus punts, també { $point }, tenen { WORD($kind) ->
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada a «{ sec-velocities }»: { $sym } = { $value }.
-composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { WORD($kind) ->
+composition-slide_seen_step = { $body } llisca al llarg de { $frame } sense girar respecte d’ell, i per tant tots els seus punts, també { $point }, tenen { WORD($kind) ->
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada al pas { $step }: { $sym } = { $value }.

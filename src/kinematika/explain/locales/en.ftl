@@ -557,23 +557,23 @@ ans-pole_velocity = velocity of I along the centrodes
 centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero:
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
-composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($body) ->
-        [many] do
-       *[one] does
-    } not turn relative to { $frame }, so all { COUNT($body) ->
-        [many] their
-       *[one] its
-    } points have the relative { WORD($kind) ->
+composition-slide_seen = { $body } { COUNT($body) ->
+        [many] slide
+       *[one] slides
+    } along { $frame } without turning relative to it, so every point of { COUNT($body) ->
+        [many] them
+       *[one] it
+    }, { $point } too, has the relative { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
     } found in “{ sec-velocities }”: { $sym } = { $value }.
-composition-slide_seen_step = { $point } slides along its guide; { $body } { COUNT($body) ->
-        [many] do
-       *[one] does
-    } not turn relative to { $frame }, so all { COUNT($body) ->
-        [many] their
-       *[one] its
-    } points have the relative { WORD($kind) ->
+composition-slide_seen_step = { $body } { COUNT($body) ->
+        [many] slide
+       *[one] slides
+    } along { $frame } without turning relative to it, so every point of { COUNT($body) ->
+        [many] them
+       *[one] it
+    }, { $point } too, has the relative { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }: { $sym } = { $value }.

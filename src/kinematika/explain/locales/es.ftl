@@ -532,11 +532,11 @@ ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
-composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { WORD($kind) ->
+composition-slide_seen = { $body } desliza a lo largo de { $frame } sin girar respecto de él, así que todos sus puntos, también { $point }, tienen la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en «{ sec-velocities }»: { $sym } = { $value }.
-composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { WORD($kind) ->
+composition-slide_seen_step = { $body } desliza a lo largo de { $frame } sin girar respecto de él, así que todos sus puntos, también { $point }, tienen la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }: { $sym } = { $value }.

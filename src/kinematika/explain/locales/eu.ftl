@@ -341,7 +341,7 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M: modulua ez
 a-intro = Abiadurak ezagunak direnez, termino normal guztiak eta Coriolisen termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
-eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira; beraz, haien bi ? ikurrak ezezagun bakarra dira.
+eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira; beraz, haien bi ? ikurrek ezezagun bakar bat adierazten dute, { $rate }.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, «{ sec-velocities }» atalean aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
 driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
@@ -479,11 +479,11 @@ ans-pole_velocity = I zentroaren abiadura polodietan zehar
 centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian:
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
-composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek «{ sec-velocities }» atalean aurkitutako { WORD($kind) ->
+composition-slide_seen = { $body } solidoa { $frame } solidoan zehar irristatzen da, harekiko biratu gabe; beraz, haren puntu guztiek, { $point } puntuak ere, «{ sec-velocities }» atalean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboa dute: { $sym } = { $value }.
-composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek { $step }. urratsean aurkitutako { WORD($kind) ->
+composition-slide_seen_step = { $body } solidoa { $frame } solidoan zehar irristatzen da, harekiko biratu gabe; beraz, haren puntu guztiek, { $point } puntuak ere, { $step }. urratsean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboa dute: { $sym } = { $value }.
@@ -650,7 +650,7 @@ centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ 
 centre-line-rolls = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $roller } solidoa ez da irristatzen { $on } solidoaren gainean: { $b } solidoaren { $point } puntuak { $body } solidoaren abiadura du, eta { $body } solidoa { $pivot } puntuaren inguruan biratzen da)
 centre-line-rolls_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $roller } solidoa ez da irristatzen { $on } solidoaren gainean: { $b } solidoaren { $point } puntuak traslatzen den { $body } solidoaren abiadura du)
 centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua traslatzen den { $body } solidoarekin mugitzen da)
-centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra ({ $pivot }′ puntuan, { $pivot } puntutik gidara doan perpendikularraren oinean, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa: { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
+centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra ({ $pivot }′ da { $pivot } puntutik gidara doan perpendikularraren oina. Han, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa; beraz, { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
 centre-carried-slip = {" "}({ $b } solidoa ez da irristatzen { $body } solidoaren gainean: bere { $point } puntuak { $body } solidoaren abiadura du bertan)
 centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian:
 centre-carried-between_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
