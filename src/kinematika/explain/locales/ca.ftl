@@ -1043,6 +1043,11 @@ centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
+# the construction repeated for a body symmetric to one done: referred to (twenty-ninth round b)
+centre-carried_as = com per a { $first }, és a la recta que passa per { $p } i { $q }, a { $dist } { ELISION($near) ->
+        [vowel] d’{ $near }
+       *[other] de { $near }
+    }:
 centre-carried-between_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }

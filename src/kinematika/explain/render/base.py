@@ -1187,12 +1187,30 @@ class Renderer(ABC):
         args = {"l1": lines[0], "l2": lines[1], "frame": self.frame_name(a), "p": names[0], "q": names[1],
                 "vp": Value(vp, "speed"), "vq": Value(vq, "speed")}
         if c.pivots:        # the notes' words: each point turns with a body about its centre (C5-1.4)
+            first = self.carried_before(c)
+            if first is not None:
+                return Msg("centre.carried_as", {"first": Name(first, "body"), "p": names[0], "q": names[1],
+                                                 "near": Name(c.near), "dist": Value(c.distance, "len")})
             key = f"centre.carried.{c.side}" + ("_from" if c.near and c.distance is not None else "")
             return Msg(key, {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
                              "c1": c.pivots[0], "c2": c.pivots[1], "near": Name(c.near),
                              "dist": Value(c.distance, "len"),
                              "why1": self.slip(c, 0), "why2": self.slip(c, 1)})
         return Msg(f"centre.proportional.{c.side}", args)
+
+    def carried_before(self, c: CentreNote) -> Optional[str]:
+        """The body whose centre the page found by the very construction of `c` before (C5-1.4's
+        planet 1, for planets 2 and 3: the same carrier and ring, pivots, side and distance),
+        else None and `c` is recorded as the first. A construction repeated for a body
+        symmetric to one done is said once and referred to, "as for *planet 1*, … at 2·r/5 from
+        A2" (twenty-ninth round (b): steps 5 and 6 repeated step 3's paragraph word for word)."""
+        if not (c.near and c.distance is not None):
+            return None
+        said = self.__dict__.setdefault("_carried", {})
+        key = (c.side, tuple(c.via), tuple(map(str, c.pivots)), str(c.distance), tuple(map(str, c.slips)) != ())
+        body = c.pair[1]
+        first = said.setdefault(key, body)
+        return first if first != body else None
 
     @staticmethod
     def slip(c: CentreNote, i: int) -> Any:
