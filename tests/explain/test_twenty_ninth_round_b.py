@@ -199,3 +199,76 @@ def test_a_fixed_body_is_the_reference_by_its_own_name(name: str, lang: str) -> 
         return
     page = rendered(name, lang)
     assert f"*{GROUND[lang]}*" not in page and f"*el {GROUND[lang]}*" not in page, spelt
+
+
+PERMANENT = {"en": "a permanent centre", "es": "un centro permanente", "ca": "un centre permanent",
+             "eu": "biraketa-zentro iraunkorra"}
+
+
+OLD_PIN = re.compile(r"^I_\{?[^ ]*\}?: (the pin |el eje de la articulación \S+,|l’eix de l’articulació \S+,|"
+                     r"\S+ giltzaduraren ardatza)")
+
+
+@over(name=SEEDS, lang=LANGS)
+def test_a_fixed_pivot_is_said_a_permanent_centre(name: str, lang: str) -> None:
+    """A body pinned to the fixed body has its pin for instant centre at every instant: the
+    centre's line says so (the notes' point in C5-E.2), never the bare "the pin O" of a
+    relative centre."""
+    page = rendered(name, lang)
+    lines = [x for x in page.splitlines() if x.startswith("I_") and " rel " not in x.split(":")[0]]
+    assert not [x for x in lines if OLD_PIN.match(x)], [x for x in lines if OLD_PIN.match(x)]
+
+
+@over(lang=LANGS)
+def test_the_gear_changes_arm_and_ring_turn_about_permanent_centres(lang: str) -> None:
+    """C5-E.2 (eu's item): I_arm and I_ring, both at the fixed axis O, are permanent centres."""
+    page = rendered("seed_c5_e2_gear_change", lang)
+    said = [x for x in page.splitlines() if x.startswith("I_") and PERMANENT[lang] in x]
+    assert len(said) == 2, said
+
+
+TIED_AT = {"en": "where the *left strand* is tied to the *ceiling*", "es": "donde el *tramo izquierdo* está atado al *techo*",
+           "ca": "on el *tram esquerre* és lligat al *sostre*", "eu": "*ezkerreko kable-zatia* *sabaiari* lotuta dagoen lekua"}
+
+
+@over(lang=LANGS)
+def test_a_strands_centre_is_where_it_is_tied(lang: str) -> None:
+    """C5-1.1: a strand's instant centre is the point G1 where it is tied to the ceiling (the
+    notes), never "the axis of the hinge G1"; both strands' centres are asked and answered."""
+    page = rendered("seed_c5_1_1_pulley_on_cable", lang)
+    assert TIED_AT[lang] in page
+    assert not re.search(r"articulació G1|articulación G1|G1 giltzaduraren|pin G1", page)
+    answers = section(page, HEAD[lang][2])
+    assert answers.count("(−2·√3·r") == 1 and answers.count("(2·√3·r") == 1, answers
+
+
+@over(lang=LANGS)
+def test_a_body_sliding_without_turning_carries_every_point(lang: str) -> None:
+    """C5-1.3: E is the bar's free end, not in the sleeve: the bar slides without turning, so every
+    point of it, E too, has the relative velocity (acceleration) found before."""
+    page = rendered("seed_c5_1_3_bar_in_sleeve", lang)
+    too = {"en": "E too", "es": "también E", "ca": "també E", "eu": "E puntuak ere"}[lang]
+    assert page.count(too) == 2, page.count(too)
+    assert not re.search(r"E (slides along its guide|desliza a lo largo de su guía|llisca al llarg de la seva guia)|"
+                         r"E puntua bere gidan", page)
+
+
+def test_the_basque_shared_unknown_and_guide_sentences() -> None:
+    """C5-1.3 (eu): "haien bi ? ikurrek ezezagun bakar bat adierazten dute, α_euskarria"; the
+    guide's perpendicular said in two sentences."""
+    page = rendered("seed_c5_1_3_bar_in_sleeve", "eu")
+    assert "haien bi ? ikurrek ezezagun bakar bat adierazten dute, α_euskarria." in page
+    assert "ikurrak ezezagun bakarra dira" not in page
+    assert "J′ da J puntutik gidara doan perpendikularraren oina. Han," in page
+
+
+@over(lang=LANGS)
+def test_a_repeated_construction_is_referred_to(lang: str) -> None:
+    """C5-1.4: planets 2 and 3 are found as planet 1 was: their centres' lines refer to planet 1
+    and give the distance, 2r/5 from A2 (A3), instead of repeating the paragraph."""
+    page = rendered("seed_c5_1_4_epicyclic", lang)
+    carried = [x for x in page.splitlines() if re.match(r"I_\S+[123]\}: ", x) and "2·r/5" in x]
+    assert len(carried) == 3, carried
+    full, *short = carried
+    assert all(len(x) < len(full) / 2 for x in short), short
+    assert all(("A2" in x or "A3" in x) for x in short), short
