@@ -57,7 +57,7 @@ structure-shaped = { $body }, { $shape } of radius { $radius }
 structure-shaped_welded = { $body }, { $n ->
         [2] two
        *[other] { $n }
-    } welded wheels of radii { $radii }
+    } wheels in one piece, of radii { $radii }
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
 structure-frame_named = { $body } (fixed)
 structure-welded = { $bodies } { $bodies_n ->
