@@ -68,7 +68,7 @@ def test_the_reference_is_the_ground():
     # twenty-seventh round (e): the ceiling keeps its own name, as the reference too: "*sabaia*
     # (finkoa)" and "*sabaiarekiko*", never "*lurra*" on a page with no floor
     assert "*3. polearen* biraketa-zentro instantaneoa *sabaiarekiko*" in eu
-    assert "| 1 | *sabaia* (finkoa) |" in eu
+    assert "| 1 | *sabaia* (finkoa), *1. kable-zatia* barne |" in eu     # the frame's row (29 b)
     assert "*lurr" not in eu and "*sabaia eta 1. kable-zatia* solidoarekiko" not in eu
 
 

@@ -94,7 +94,7 @@ def test_the_bicycles_pedals_are_one_word_by_hand() -> None:
     assert "eix dels pedals" not in ca and "eix del pedal" not in ca
     assert "L’enunciat anomena r el radi del *plat amb els pedals* i R el del *pinyó*" in ca
     eu = plain_page("seed_c5_e6_bicycle", "eu")
-    assert "pedal-beso" not in eu and "| *L* | pedalen luzera |" in eu and "| P | pedalaren muturra |" in eu
+    assert "pedal-beso" not in eu and "| *L* | pedalen luzera |" in eu and "| P | pedalaren muturra, C-tik L beherago |" in eu
     assert "*Plater pedaldunak* eta *pinoiak* erradio desberdinak dituzte" in eu
 
 

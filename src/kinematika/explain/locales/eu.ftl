@@ -406,7 +406,7 @@ centres-intro_named_rel = I ikurrak, solido baten izena azpiindize duela, solido
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
 # a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
-centre-joint-revolute_fixed = { $joint } ardatz finkoa (zentro iraunkorra),
+centre-joint-revolute_fixed = { $joint } ardatza, zentro iraunkorra,
 centre-joint-revolute_tied = { $joint } puntua, { $body } { $frame } solidoari lotuta dagoen lekua, zentro iraunkorra,
 centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
 centre-joint-gear = zirkunferentzia primitiboen { $joint } kontaktua,
