@@ -27,7 +27,7 @@ FAMILIES = {
     "joint": list(KINDS) + ["slot_fixed"],                  # every kind of joint has its name (kinds.kind_key)
     "shape": ["circle", "line", "disc", "plane", "curveshape", "camshape"],
     "cond": [k.name for k in KINDS.values() if not k.rolls] + ["slot_fixed"],  # rolling pairs are written out
-    "centre.joint": [k.name for k in KINDS.values() if k.centre in FIXED],
+    "centre.joint": [k.name for k in KINDS.values() if k.centre in FIXED] + ["revolute_fixed", "revolute_tied"],   # 29 (b)
     "centre.line": ["slot", "wheel", "normal", "slot_fixed"],
     "fig.normal": ["slot", "wheel", "normal", "slot_fixed"],   # the centres caption's lines (structure._normal_lines)
     "ask": [k.name for k in QUESTIONS.values() if type(k).label is QuestionKind.label],   # `ask.NAME`

@@ -58,15 +58,16 @@ def test_the_reference_is_the_ground():
     its own (C5-1.5's ceiling) keeps its one name on the page, never "*lurra*" beside
     "ω_blokea = ω_sabaia"."""
     ca = rendered("seed_c5_1_6_belt", "ca", drawings=False)
-    assert "CIR de la *politja mòbil* respecte del *terra*" in ca
-    assert "respecte de la *politja fixa*" not in ca
+    # twenty-ninth round (b): the fixed pulley is the reference by its own name, no ground
+    assert "CIR de la *politja mòbil* respecte de la *politja fixa*" in ca
+    assert "respecte del *terra*" not in ca
     assert "no llisca sobre la *politja fixa*" in ca
     eu = rendered("seed_c5_1_5_pulley_block", "eu", drawings=False)
     # "solido" said once (ninth round); an instant centre relative to the ground (twentieth round (b))
     # twenty-seventh round (e): the ceiling keeps its own name, as the reference too: "*sabaia*
     # (finkoa)" and "*sabaiarekiko*", never "*lurra*" on a page with no floor
     assert "*3. polearen* biraketa-zentro instantaneoa *sabaiarekiko*" in eu
-    assert "| 1 | *sabaia* (finkoa) |" in eu
+    assert "| 1 | *sabaia* (finkoa), *1. kable-zatia* barne |" in eu     # the frame's row (29 b)
     assert "*lurr" not in eu and "*sabaia eta 1. kable-zatia* solidoarekiko" not in eu
 
 
@@ -168,7 +169,7 @@ def test_the_tied_strand_is_a_part_welded_to_the_ceiling():
     to the ceiling, on which pulley 1 rolls; a centre is said relative to the ceiling, the one
     name of the fixed body on the page (sixth round: the ceiling carries no shape of its own)."""
     ca = rendered("seed_c5_1_5_pulley_block", "ca", drawings=False)
-    assert "| 2 | *tram 1* (fix al *sostre*) |" in ca
+    assert "| 1 | *sostre* (fix), amb el *tram 1* |" in ca          # the frame's row (29 b)
     assert "I_{politja1}: el punt de contacte J (rodolament sense lliscament)" in ca   # the centre, said once (17a)
     # an absolute centre is said relative to the ceiling, the fixed body's one name on the page
     # (twentieth round (b) said the ground; twenty-seventh round (e): a page with no floor)

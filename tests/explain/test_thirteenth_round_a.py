@@ -137,6 +137,7 @@ def test_no_weld_words(name, lang):
 
 def test_the_planes_are_fixed_to_the_ground():
     """C5-1.2: the two planes are part of the ground, said as the notes say it."""
-    assert "*left plane* (fixed to the *ground*)" in rendered("seed_c5_1_2_bar_on_inclined_wheels", "en")
-    assert "*pla esquerre* (fix al *terra*)" in rendered("seed_c5_1_2_bar_on_inclined_wheels", "ca")
+    # the frame's row names them (twenty-ninth round (b): no rows of their own)
+    assert "| 1 | *ground* (fixed), with the *left plane* and the *right plane* |" in rendered("seed_c5_1_2_bar_on_inclined_wheels", "en")
+    assert "| 1 | *terra* (fix), amb el *pla esquerre* i el *pla dret* |" in rendered("seed_c5_1_2_bar_on_inclined_wheels", "ca")
     assert "solidaris: un sol sòlid rígid" in rendered("seed_c5_e6_bicycle", "ca")

@@ -182,9 +182,9 @@ QUANTITY = {"en": ("velocity", "acceleration"), "es": ("velocidad", "aceleració
 def test_a_sliders_relative_motion_names_its_quantity(lang):
     """001 P pair: B's relative velocity and acceleration, each line naming its own quantity."""
     lines = [line for line in plain("seed_001_p_pair_coriolis", lang).splitlines()
-             if re.search(r"_\{B∈N \w+\.? M\} =", line) and line.startswith("B ")]
+             if re.search(r"_\{B∈N \w+\.? M\} =", line) and re.search(r"(B too|también B|també B|B puntuak ere)", line)]   # 29 (b): the body slides, B too
     speed, accel = QUANTITY[lang]
-    assert [line.startswith("B ") for line in lines] == [True, True], lines
+    assert len(lines) == 2, lines
     assert speed in lines[0] and accel not in lines[0], lines[0]
     assert accel in lines[1] and speed not in lines[1], lines[1]
 

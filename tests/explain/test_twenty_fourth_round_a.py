@@ -52,10 +52,11 @@ def test_a_fixed_row_does_not_repeat_the_ground_word(name: str, lang: str) -> No
 def test_the_catalan_ground_cylinder() -> None:
     """C5-1.8: the Catalan *terra cilíndric* stands alone; the other languages' names (a fixed
     cylinder) do not say the ground's word and keep the tie."""
-    row = {"ca": "| 1 | *terra cilíndric*, circumferència de radi 2·r |",
-           "en": "| 1 | *fixed cylinder* (*ground*), circle of radius 2·r |",
-           "es": "| 1 | *cilindro fijo* (*suelo*), circunferencia de radio 2·r |",
-           "eu": "| 1 | *zilindro finkoa* (*lurra*), 2·r erradioko zirkunferentzia |"}
+    # twenty-ninth round (b): every fixed part by its own name, marked fixed, no "(*ground*)"
+    row = {"ca": "| 1 | *terra cilíndric* (fix), circumferència de radi 2·r |",
+           "en": "| 1 | *fixed cylinder* (fixed), circle of radius 2·r |",
+           "es": "| 1 | *cilindro fijo* (fijo), circunferencia de radio 2·r |",
+           "eu": "| 1 | *zilindro finkoa* (finkoa), 2·r erradioko zirkunferentzia |"}
     for lang, want in row.items():
         assert want in rendered("seed_c5_1_8_contact_points", lang), lang
 

@@ -145,7 +145,7 @@ def test_the_basque_small_wheel_is_said_whole():
 FOOT = {"en": r"at (\w)′, the foot of the perpendicular from \1 to the guide",
         "es": r"en (\w)′, el pie de la perpendicular desde \1 a la guía",
         "ca": r"a (\w)′, el peu de la perpendicular des de \1 a la guia",
-        "eu": r"(\w)′ puntuan, \1 puntutik gidara doan perpendikularraren oinean"}
+        "eu": r"(\w)′ da \1 puntutik gidara doan perpendikularraren oina"}      # two sentences since 29 (b)
 
 
 @over(name=SEEDS, lang=LANGS)

@@ -211,8 +211,8 @@ def test_the_readers_wordings() -> None:
     assert "els centres de les rodes són a 4R l’un de l’altre" in plain_page("seed_c5_e3_wheels_with_rod", "ca")
     assert "són a 2√2 R l’un de l’altre" in plain_page("seed_c5_e4_upper_wheel", "ca")   # round 29 (d)
     assert "elkarrengandik 4R-ra" in plain_page("seed_c5_e3_wheels_with_rod", "eu")
-    assert "elkarrengandik 2√2 R-ra" in plain_page("seed_c5_e4_upper_wheel", "eu")
-    assert "(es comprova més avall)" in plain_page("seed_c5_2_1_tricycle", "ca")
+    assert "elkarrengandik 2√2 R-ra" in plain_page("seed_c5_e4_upper_wheel", "eu")   # round 29 (d)
+    assert "(vegeu la Nota)" in plain_page("seed_c5_2_1_tricycle", "ca")     # the answer in the Note (29 b)
     for lang, text in {"en": "radius 1 m", "es": "radio 1 m", "ca": "radi 1 m", "eu": "1 m-ko erradioko"}.items():
         assert text in plain_page("seed_c5_1_3_bar_in_sleeve", lang), lang
     assert "pren R per al radi del *plat amb els pedals* i r per al del *pinyó*" in plain_page("seed_c5_e6_bicycle", "ca")

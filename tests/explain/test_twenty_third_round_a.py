@@ -37,8 +37,12 @@ def test_a_rolling_witness_says_it_does_not_slip(name: str, lang: str) -> None:
     for note in _notes(doc):
         b = note.pair[1]
         rolling = [k for k in note.via if any(rolls(j) and {j.a, j.b} == {k, b} for j in sol.model.joints)]
-        line = next(x for x in md.splitlines() if x.startswith("I_") and f" {note.witnesses[0][0]} " in x
-                    and f" {note.witnesses[1][0]} " in x and ("(" in x or not rolling))
+        line = next((x for x in md.splitlines() if x.startswith("I_") and f" {note.witnesses[0][0]} " in x
+                     and f" {note.witnesses[1][0]} " in x and ("(" in x or not rolling)), None)
+        if line is None or re.search(r"^I_\S+: (as for|como para|com per a|\S+ \S+ bezala,)", line):
+            # a construction done for a symmetric body, referred to (29 b)
+            assert any(re.search(r"^I_\S+: (as for|como para|com per a|\S+ \S+ bezala,)", x) for x in md.splitlines())
+            continue
         assert line.count(SLIP[lang]) == len(rolling), line
 
 
@@ -99,15 +103,15 @@ def test_the_fixed_row_says_a_wheels_point_is_a_contact(name: str, lang: str) ->
     cell = row.rstrip(" |").rsplit("|", 1)[1]
     assert CONTACT[lang] in cell, row
     bare = [p.strip() for p in re.split(r",| and | y | i | eta ", cell.split("(")[0] if lang == "eu" else cell.split(CONTACT[lang])[0])]
-    if lang == "eu":       # "G, J eta K (kontaktu-puntuak)": the contacts are the last ones before the bracket
+    if lang == "eu":       # "G, J eta K (kontaktu-puntuak)", "C1 eta F puntuen azpiko …": the contacts are filtered out
         bare = [p for p in bare if p not in contacts]
     assert not set(bare) & set(contacts), row
 
 
 def test_the_tricycle_ground_row() -> None:
     """C5-2.1, the reader's item in four languages."""
-    want = {"en": "| contacts of the wheels at C1, C2, and F |", "es": "| contactos de las ruedas en C1, C2 y F |",
-            "ca": "| contactes de les rodes a C1, C2 i F |", "eu": "| C1, C2 eta F (gurpilen kontaktu-puntuak) |"}
+    want = {"en": "| contact points under C1, C2, and F |", "es": "| puntos de contacto bajo C1, C2 y F |",
+            "ca": "| punts de contacte sota C1, C2 i F |", "eu": "| C1, C2 eta F puntuen azpiko kontaktu-puntuak |"}
     for lang in LANGS:
         row = next(x for x in rendered("seed_c5_2_1_tricycle", lang).splitlines() if x.startswith("| 1 |"))
         assert row.endswith(want[lang]), row
@@ -116,8 +120,8 @@ def test_the_tricycle_ground_row() -> None:
 def test_the_articulated_vehicles_ground_row_names_its_wheels_contacts() -> None:
     """C5-2.2: the ground lists no point (`ground: []`), yet its four knife-edge wheels touch it
     at C1–C4; its row was empty (two readers marked it). The contacts are listed as on 2.1."""
-    want = {"en": "| contacts of the wheels at C1, C2, C3, and C4 |", "es": "| contactos de las ruedas en C1, C2, C3 y C4 |",
-            "ca": "| contactes de les rodes a C1, C2, C3 i C4 |", "eu": "| C1, C2, C3 eta C4 (gurpilen kontaktu-puntuak) |"}
+    want = {"en": "| contact points under C1, C2, C3, and C4 |", "es": "| puntos de contacto bajo C1, C2, C3 y C4 |",
+            "ca": "| punts de contacte sota C1, C2, C3 i C4 |", "eu": "| C1, C2, C3 eta C4 puntuen azpiko kontaktu-puntuak |"}
     for lang in LANGS:
         row = next(x for x in rendered("seed_c5_2_2_articulated", lang).splitlines() if x.startswith("| 1 |"))
         assert row.endswith(want[lang]), row

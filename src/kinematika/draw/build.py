@@ -15,7 +15,7 @@ from ..shapes import Cam, Circle, Curve, Disc, Line, Plane
 from ..errors import KinematikaError
 from .options import DrawOptions
 from .projection import Projection, projection
-from .names import body_labels, body_numbers, listed, names_bodies, numbered, value_text
+from .names import body_labels, body_numbers, listed, names_bodies, numbered, value_text, welded_to_frame
 from .results import add_results
 from .scene import BodyView, JointView, Numbers, Scene, ShapeView, Vec, drawing_values, numbering_note
 from .skeleton import add_skeletons
@@ -96,19 +96,6 @@ def _bodies(inst: Instant, num: Numbers, lang: Optional[str] = None) -> dict[str
         for name in _passing(model, j):
             out[j.a].passing.append(name)
     return {name: out[name] for name in model.bodies}
-
-
-def welded_to_frame(model: Any) -> set[str]:
-    """The bodies welded to the frame, directly or through other welds (C5-1.2's inclined
-    planes): a weld leaves no relative motion, so they are ground and are drawn as it."""
-    fixed, grew = {model.frame}, True
-    while grew:
-        grew = False
-        for j in model.joints:
-            if j.kind.rigid and len({j.a, j.b} & fixed) == 1:
-                fixed |= {j.a, j.b}
-                grew = True
-    return fixed - {model.frame}
 
 
 def _passing(model: Any, j: Any) -> list[str]:

@@ -20,9 +20,26 @@ FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by the
 
 def body_numbers(model: Any) -> dict[str, int]:
     """The notes' numbering: the frame 1, the other bodies 2, 3, … in the file's order (the
-    order bodies are listed and coloured in)."""
-    order = [model.frame] + [b for b in model.bodies if b != model.frame]
+    order bodies are listed and coloured in); a body welded to the frame is the frame (one
+    row of the structure's table, twenty-ninth round (b): C5-1.2's planes were bodies 2 and 3
+    "fixed to the ground"), so it is numbered after every moving body, leaving no gap."""
+    welded = welded_to_frame(model)
+    order = [model.frame] + [b for b in model.bodies if b != model.frame and b not in welded] + \
+        [b for b in model.bodies if b in welded]
     return {name: k for k, name in enumerate(order, start=1)}
+
+
+def welded_to_frame(model: Any) -> set[str]:
+    """The bodies welded to the frame, directly or through other welds (C5-1.2's inclined
+    planes): a weld leaves no relative motion, so they are ground and are drawn as it."""
+    fixed, grew = {model.frame}, True
+    while grew:
+        grew = False
+        for j in model.joints:
+            if j.kind.rigid and len({j.a, j.b} & fixed) == 1:
+                fixed |= {j.a, j.b}
+                grew = True
+    return fixed - {model.frame}
 
 
 def body_labels(model: Any, lang: Optional[str] = None, named: bool = True) -> dict[str, str]:

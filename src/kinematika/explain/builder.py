@@ -33,7 +33,7 @@ from .polygon import degenerate, level_polygon, polygon, term_steps
 from .terms import acceleration_terms
 from .positions import position_section
 from .spatial import composition_pairs, composition_section, fields_section, rates_section
-from .structure import derived_arrows, ground_part, moduli_units, reorder, structure_section, values_table, name_contacts
+from .structure import derived_arrows, moduli_units, reorder, structure_section, values_table, name_contacts
 from .translating import translations
 
 
@@ -144,7 +144,6 @@ def _build(ctx: Ctx, length_unit: str) -> Document:
             eq.polygon = polygon(ctx, eq)
     doc.joints = joint_places(ctx)
     doc.parameters = tuple(ctx.model.parameters)
-    doc.ground_part = ground_part(ctx)
     doc.values = ctx.drawn_values() if ctx.symbolic else {}
     doc.worded_marks = worded_marks(ctx)
     for b in doc.blocks():              # the legend names the marks that are also points (`marks`)

@@ -78,9 +78,9 @@ class Name:
     text: str
     kind: str = "point"
     bare: bool = False             # a body's name without its article (in a table's cell)
-    reference: bool = False        # the fixed body as the reference of a motion ("relative to the
-                                   # ground"): the ground's word where the ground is named after a
-                                   # part of it (`Document.ground_part`), else the body's own name
+    reference: bool = False        # the fixed body as the reference of a motion: named by its own
+                                   # name ("relative to the fixed pulley"), never a "ground" the
+                                   # problem does not have (twenty-ninth round (b))
 
     def __str__(self) -> str:
         return self.text
@@ -380,7 +380,6 @@ class Document:
     wording: Any = None                             # the model's names per language and notation
     joints: dict = field(default_factory=dict)      # joint -> its point or contact (how the text names it)
     parameters: tuple = ()                          # the model's parameters' names (its own words write them)
-    ground_part: bool = False                       # the ground is named after a part of it (`reference_name`)
     values: dict = field(default_factory=dict)      # a symbolic model's numbers (draw_at): how formulas are written
     worded_marks: tuple = ()                        # the page's points named M or D: the legend says the marks are not those points (`marks`)
 

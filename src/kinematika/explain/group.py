@@ -1367,11 +1367,15 @@ class Writer:
                        remark=remark)
 
     def tangent(self, t: Tangent) -> Derived:
-        """ω = 0 of a line tangent to two circles whose centres move alike across it."""
+        """ω = 0 of a line tangent to two circles whose centres move alike across it, said as
+        the notes say it: the strand stays vertical (horizontal, parallel to itself), tangent
+        to both, so it translates and all its points have the same velocity (twenty-ninth
+        round (b): "C1 and C2 have the same velocity component across it: no swinging" was
+        opaque)."""
         ctx = self.ctx
         return Derived(omega_sym(t.body), [], ctx.value(ctx.omega(t.body), "rate"), t.body, "omega", False,
                        remark=msg("how.tangent", a=body_name(t.circles[0]), b=body_name(t.circles[1]),
-                                  ca=point_name(t.centres[0]), cb=point_name(t.centres[1])))
+                                  way=_line_way(ctx, t.body)))
 
     def same(self, s: Same) -> Derived:
         """ω (α) shared across a weld or a prismatic pair, or through a driven joint."""
@@ -1490,3 +1494,16 @@ def record_found(ctx: Ctx, step, plan: Planner, known: set[str], rank: dict[str,
     bodies += [b for b in step.bodies if b not in bodies]
     read = [] if given else [b for b in _sources(ctx, plan.events, known, rank, True) if b in step.known]
     ctx.found_order[frozenset(step.bodies)] = (bodies, read + [b for b in step.known if b not in read])
+
+
+def _line_way(ctx: Ctx, body: str) -> str:
+    """How a straight body lies at this instant, as a teacher says it: "vertical" or
+    "horizontal" when its line is so (to 1e-9 of its unit direction), else "other"."""
+    line = next((sh for sh in ctx.inst.shapes.get(body, []) if type(sh).__name__ == "Line"), None)
+    if line is None:
+        return "other"
+    try:
+        dx, dy = (float(c) for c in line.direction[:2])
+    except TypeError:
+        return "other"
+    return "vertical" if abs(dx) < 1e-9 else "horizontal" if abs(dy) < 1e-9 else "other"

@@ -10,7 +10,7 @@ from ..model.body_shapes import Circle, Disc
 from ..point_pair import PointPair
 from .freedom import by_data, dof_by_data
 from .context import Ctx
-from .kinds import joint_kind, kind_key, knife_edge, on_fixed_line, rolls, welds
+from .kinds import crossed_by_a_slot, joint_kind, kind_key, knife_edge, on_fixed_line, rolls, welds
 from .document import Arrow, Drawing, Equation, Figure, Inline, Lead, Msg, Name, Names, Section, Sym, Table, Value, body, msg, names, point
 from .order import Step, as_found, merge_vehicles       # the order lists the steps as the text does them
 
@@ -20,16 +20,26 @@ def _points_on(ctx: Ctx, body: str) -> list[str]:
     points, then the contact points of its touching joints (J, K, T1 …, `ctx.contact`), each
     once — the same for every body (twentieth round g: C5-1.6's moving pulley listed T2, the
     model's point, and the fixed pulley left out T1, its contact with the belt)."""
-    names = list(ctx.model.bodies[body].points)
+    parts = [body] + (welded_to_frame(ctx) if body == ctx.frame else [])
+    names = [p for part in parts for p in ctx.model.bodies[part].points]
     if ctx.planar:
         names += [ctx.contact(j) for j in ctx.model.joints
-                  if getattr(j.kind, "touches", False) and body in (j.a, j.b)]
-    return list(dict.fromkeys(names))
+                  if getattr(j.kind, "touches", False) and (j.a in parts or j.b in parts)]
+    slid = _sliding_points(ctx, parts)
+    return [p for p in dict.fromkeys(names) if p not in slid]
+
+
+def _sliding_points(ctx: Ctx, parts: list[str]) -> set[str]:
+    """The points that slide along a line of `parts` (a slot's or a sliding contact's point,
+    `crossed_by_a_slot`, on the joint's other body): the other body's points, not the line's
+    (twenty-ninth round (b): C5-1.2's ground row listed J, the bar's end that slides on it)."""
+    return {j.at for j in ctx.model.joints if j.at and crossed_by_a_slot(j) and j.a in parts
+            and j.b not in parts and j.at in ctx.model.bodies[j.b].points}
 
 
 def _points_cell(ctx: Ctx, body: str) -> list:
     """A body's cell of the points column. The fixed body lists a point it carries only as the
-    contact of a wheel or rolling joint as the contact it is, "contacts of the wheels at C1,
+    contact of a wheel or rolling joint as the contact it is, "contact points under C1,
     C2, F" (twenty-third round (a): C5-2.1's ground row "C1, C2, F" was read as the wheels'
     centres, which they also name), whether or not the model lists the point on it (C5-2.2's
     ground lists none; its row was empty); its own points, and every other body's, by name."""
@@ -62,8 +72,9 @@ def structure_section(ctx: Ctx, steps: list[Step]) -> Section:
     model = ctx.model
     sec = Section(msg("sec.structure"))
     numbers = body_numbers(model)
+    # a body welded to the frame is the frame: its row (`_frame_cell`), never one of its own
     bodies = [[Name(name, "index"), _shaped(ctx, name, _body_cell(ctx, name)), _points_cell(ctx, name)]
-              for name in sorted(model.bodies, key=lambda n: numbers[n])]
+              for name in sorted(model.bodies, key=lambda n: numbers[n]) if name not in welded_to_frame(ctx)]
     sec.add(Table([msg("col.number"), msg("col.body"), msg("col.points")], bodies))
     sec.add(msg("structure.subscripts",          # ω_t: which body (render); a part welded to the frame has no rate
                 bodies=[b for b in ctx.model.bodies if b not in welded_to_frame(ctx)]))
@@ -178,6 +189,9 @@ def _shaped(ctx: Ctx, name: str, cell: Any) -> Any:
     and the Data's shape table do not; every shape stays stated there (`data.shape_rows`)."""
     round_ = [(s, inst) for s, inst in zip(ctx.model.bodies[name].shapes, ctx.inst.shapes.get(name, []))
               if isinstance(s, (Circle, Disc))]
+    if len(round_) > 1:     # C5-E.1: "two welded wheels of radii R and 2R", not a list of circles
+        return msg("structure.shaped_welded", body=cell, n=len(round_),
+                   radii=Names([Value(ctx.clean(shape.radius, "len"), "len") for _, shape in round_]))
     for spec, shape in round_:
         cell = msg("structure.shaped", body=cell, shape=msg(f"shape.{type(spec).__name__.lower()}"),
                    radius=Value(ctx.clean(shape.radius, "len"), "len"))
@@ -185,22 +199,28 @@ def _shaped(ctx: Ctx, name: str, cell: Any) -> Any:
 
 
 def _body_cell(ctx: Ctx, name: str):
-    """The structure table's body: the frame marked fixed — or, when the ground is named
-    after a part of it (`ground_part`: C5-1.6's *polea finkoa*), marked with the ground's word
-    the text later writes for the reference, "*polea finkoa* (*lurra*)" — and a body welded
-    to it marked part of it (`welded_to_frame`). A part with a shape is the ground, "*polea
-    finkoa* (*lurra*)", as the text names the reference of a motion there; a shapeless frame
-    keeps its own name on the whole page (C5-1.1's and C5-1.5's ceiling, 001's *bastidor*) and
-    is marked fixed, "*techo* (fijo)": the text says "respecto del *techo*" (twenty-seventh round
-    (e): "*bastidor* (fijo: el *suelo*)" read as two bodies, and a ceiling's page has no floor)."""
-    if name == ctx.frame and ground_part(ctx) and not _named_ground(ctx, name):
-        return msg("structure.frame_ground", body=Name(name, "body", bare=True),
-                   ground=Name(name, "body", bare=True, reference=True))
+    """The structure table's body: the frame by its own name, marked fixed, with the parts
+    welded to it (`_frame_cell`); the text names it so wherever it is the reference of a
+    motion, "relative to the *fixed pulley*" (twenty-ninth round (b): "*polea fija* (*suelo*)"
+    and "respecto del *suelo*" sent the reader after a ground the problem does not have; the
+    twenty-seventh round (e) had said it for a shapeless frame, "*bastidor* (fijo)")."""
     if name == ctx.frame:
-        return msg("structure.frame_named", body=Name(name, "body", bare=True))
+        return _frame_cell(ctx, name)
     if ctx.fixed(name):
         return msg("structure.fixed_part", body=Name(name, "body", bare=True), frame=body(ctx.frame))
     return Name(name, "body", bare=True)
+
+
+def _frame_cell(ctx: Ctx, name: str) -> Msg:
+    """The frame's cell, with the parts welded to it named in it ("*ground* (fixed), with the
+    *left plane* and the *right plane*"): they are the frame (its lines, its axles), one row
+    with its points (`_points_on`), never bodies of their own "fixed to the ground"
+    (twenty-ninth round (b): C5-1.2's planes were bodies 2 and 3)."""
+    cell = msg("structure.frame_named", body=Name(name, "body", bare=True))
+    welded = welded_to_frame(ctx)
+    if not welded:
+        return cell
+    return msg("structure.frame_parts", body=cell, parts=names(welded, "body"), parts_n=len(welded))
 
 
 def _where(ctx: Ctx, j) -> Inline | Msg | str:
@@ -507,25 +527,3 @@ def values_table(ctx: Ctx, accelerations: bool = True, runs: frozenset = frozens
             + ([value(ctx.alpha(b), "rate2")] if accelerations else []) for b in listed
             if b == ctx.frame or (not ctx.fixed(b) and b not in runs)]   # a weld to the frame: part of it
     return Table([msg("col.body"), msg("col.omega")] + ([msg("col.alpha")] if accelerations else []), rows)
-
-def _named_ground(ctx: Ctx, name: str) -> bool:
-    """Whether the model already calls its ground by the ground's word in some language
-    (C5-E.6's *lurra*, *el terra*): its row then needs no "(*lurra*)" after it."""
-    from ..model.wording import noun
-    from .catalogue import catalogue
-
-    return any(noun(ctx.model.wording.body(name, lang), lang).casefold()
-               == catalogue(lang).format("ground-word", {}).casefold() for lang in ("en", "es", "ca", "eu"))
-
-
-def ground_part(ctx: Ctx) -> bool:
-    """Whether the model names its ground after a part of it that carries a shape (the fixed
-    pulley of C5-1.6, a track): the text names the part where it acts (a contact, the
-    structure's table) and says the ground where it is the reference of a motion, as the notes
-    do ("el CIR del braç respecte al terra és el centre O de la politja fixa"). A ground with
-    no shape of its own keeps its one name on the page, whatever is welded to it (sixth round:
-    C5-1.5's ceiling, *sabaia*, was also "*lurra* solidoarekiko" beside ω_blokea = ω_sabaia;
-    its tied strand is a body named on its own, *1. kable-zatia*). The structure's table
-    introduces that word at the part (`_body_cell`), so that "relative to the ground" later
-    names a body the page has listed."""
-    return bool(ctx.planar and ctx.inst.shapes.get(ctx.frame))

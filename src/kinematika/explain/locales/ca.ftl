@@ -87,13 +87,16 @@ structure-subscript_rel = { $sym } és { WORD($kind) ->
        *[other] de { $other }
     } (dos noms units per «rel», relatiu a: el primer sòlid respecte del segon)
 structure-shaped = { $body }, { $shape } de radi { $radius }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
-structure-frame_ground = { $body }{ SAME($body, $ground) ->
-        [yes] {""}
-       *[no] {" "}({ $ground })
-    }
+# a body with several round shapes: its welded wheels, said once (twenty-ninth round b)
+structure-shaped_welded = { $body }, { $n ->
+        [2] dues
+       *[other] { $n }
+    } rodes solidàries de radis { $radii }
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
-structure-frame_named = { $body } (fix)
+structure-frame_named = { $body } ({ GENDER($body) ->
+        [f] fixa
+       *[m] fix
+    })
 structure-welded = { $bodies } { $bodies_n ->
         [one] és fix a
        *[other] són fixos a
@@ -102,13 +105,15 @@ structure-welded = { $bodies } { $bodies_n ->
        *[other] en formen part i no es mouen
     }; tots els seus punts tenen velocitat i acceleració nul·les.
 structure-contacts_wheel = { $points_n ->
-        [one] contacte d’una roda a { $points }
-       *[other] contactes de les rodes a { $points }
+        [one] punt de contacte sota { $points }
+       *[other] punts de contacte sota { $points }
     }
 structure-contacts_rolling = { $points_n ->
         [one] punt de contacte { $points }
        *[other] punts de contacte { $points }
     }
+# the frame's row names the parts welded to it: they are the frame (twenty-ninth round b)
+structure-frame_parts = { $body }, amb { $parts }
 structure-fixed_part = { $body } (fix a { $frame })
 structure-dof = El mecanisme té { $dof ->
         [one] un grau
@@ -640,6 +645,9 @@ centres-intro_named_rel = El símbol I, amb el nom d’un sòlid ({ $pair }), de
     }, i, amb dos noms units per «rel» (relatiu a), el del primer respecte del segon: el punt on la velocitat relativa és nul·la.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = l’eix de l’articulació { $joint },
+# a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
+centre-joint-revolute_fixed = l’eix de l’articulació fixa { $joint }, un centre permanent,
+centre-joint-revolute_tied = el punt { $joint }, on { $body } és lligat a { $frame }, un centre permanent,
 centre-joint-rolling = el punt de contacte { $joint } (rodolament sense lliscament),
 centre-joint-gear = el contacte { $joint } de les circumferències primitives,
 centre-joint-prismatic = l’enllaç és prismàtic: el moviment relatiu és una translació i el CIR és a la perpendicular a la guia,
@@ -826,11 +834,11 @@ centre-proportional-outside = per Aronhold–Kennedy és a la recta que passa pe
        *[other] de { $frame }
     } hi són perpendiculars i proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en el mateix sentit, de manera que el CIR és més enllà del més lent, on la velocitat s’anul·la:
 composition-slide = { $point } llisca al llarg de la seva guia: el seu moviment relatiu segueix la guia, { $sym } = { $value }.
-composition-slide_seen = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { WORD($kind) ->
+composition-slide_seen = { $body } llisca al llarg de { $frame } sense girar respecte d’ell, i per tant tots els seus punts, també { $point }, tenen { WORD($kind) ->
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada a «{ sec-velocities }»: { $sym } = { $value }.
-composition-slide_seen_step = { $point } llisca al llarg de la seva guia; { $body } no gira respecte de { $frame }, i per tant tots els seus punts tenen { WORD($kind) ->
+composition-slide_seen_step = { $body } llisca al llarg de { $frame } sense girar respecte d’ell, i per tant tots els seus punts, també { $point }, tenen { WORD($kind) ->
         [accel] l’acceleració
        *[speed] la velocitat
     } relativa trobada al pas { $step }: { $sym } = { $value }.
@@ -1087,6 +1095,11 @@ centre-carried-between = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $frame }
        *[other] de { $frame }
     } són perpendiculars a la recta que passa per { $p } i { $q }, de manera que el CIR és en aquesta recta; en ella les velocitats són proporcionals a la distància al CIR: { $p } es mou amb { $vp } i { $q } amb { $vq }, en sentits oposats, de manera que el CIR és entre tots dos, on la velocitat s’anul·la:
+# the construction repeated for a body symmetric to one done: referred to (twenty-ninth round b)
+centre-carried_as = com per a { $first }, és a la recta que passa per { $p } i { $q }, a { $dist } { ELISION($near) ->
+        [vowel] d’{ $near }
+       *[other] de { $near }
+    }:
 centre-carried-between_from = { $p } es mou amb { $k1 } al voltant { ELISION($c1) ->
         [vowel] d’{ $c1 }
        *[other] de { $c1 }
@@ -1197,7 +1210,11 @@ idle-unused = { $bodies } no { $count ->
         [one] la seva velocitat angular
        *[other] les seves velocitats angulars
     }.
-how-tangent = (és tangent a { $a } i a { $b }, i { $ca } i { $cb } tenen la mateixa component de la velocitat perpendicular a ell: no hi ha moviment pendular, es trasllada)
+how-tangent = (es manté { WORD($way) ->
+        [vertical] vertical
+        [horizontal] horitzontal
+       *[other] paral·lel a si mateix
+    }, tangent a { $a } i a { $b }: es trasllada, i tots els seus punts tenen la mateixa velocitat)
 how-glides = ({ $p } i { $q } es mouen sempre sobre la recta { $line }: el sòlid es trasllada al llarg d’aquesta recta, sense girar)
 how-parallel_paths = ({ $p } i { $q } es mantenen sempre a una altura igual al radi de la seva roda sobre el terra pla, de manera que es mouen sobre rectes paral·leles: el sòlid es trasllada, sense girar)
 how-translates_always = (es trasllada en tot instant, com s’ha vist a les velocitats)
@@ -1335,8 +1352,6 @@ check-quick = Raó de temps del retorn ràpid: { $lever } és en un extrem de la
 driver-slide = Dada: la velocitat de lliscament a l’enllaç prismàtic { $joint } és { $value }.
 driver-slide_accel = Dada: l’acceleració de lliscament a l’enllaç prismàtic { $joint } és { $value }.
 centre-line-normal = la normal comuna al contacte { $point } (els sòlids llisquen l’un sobre l’altre: cap velocitat relativa segons ella)
-# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
-ground-word = el terra
 # un CIR a partir de dues velocitats paral·leles i perpendiculars a la recta dels seus punts (la construcció proporcional dels apunts)
 centre-parallel-between = els punts { $p } i { $q } { ELISION($body) ->
         [vowel] d’{ $body }

@@ -54,11 +54,11 @@ structure-subscript_rel = { $sym } is the { WORD($kind) ->
        *[rate] angular velocity of { $body }
     } relative to { $other } (two names joined by “rel”: the first body relative to the second)
 structure-shaped = { $body }, { $shape } of radius { $radius }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
-structure-frame_ground = { $body }{ SAME($body, $ground) ->
-        [yes] {""}
-       *[no] {" "}({ $ground })
-    }
+# a body with several round shapes: its welded wheels, said once (twenty-ninth round b)
+structure-shaped_welded = { $body }, { $n ->
+        [2] two
+       *[other] { $n }
+    } wheels in one piece, of radii { $radii }
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
 structure-frame_named = { $body } (fixed)
 structure-welded = { $bodies } { $bodies_n ->
@@ -69,13 +69,15 @@ structure-welded = { $bodies } { $bodies_n ->
        *[other] they are part of it and do not move; all their
     } points have zero velocity and acceleration.
 structure-contacts_wheel = { $points_n ->
-        [one] contact of a wheel at { $points }
-       *[other] contacts of the wheels at { $points }
+        [one] contact point under { $points }
+       *[other] contact points under { $points }
     }
 structure-contacts_rolling = { $points_n ->
         [one] contact point { $points }
        *[other] contact points { $points }
     }
+# the frame's row names the parts welded to it: they are the frame (twenty-ninth round b)
+structure-frame_parts = { $body }, with { $parts }
 structure-fixed_part = { $body } (fixed to { $frame })
 structure-dof = The mechanism has { $dof ->
         [one] one degree
@@ -499,6 +501,9 @@ centres-intro_named = The symbol I with a body's name ({ $pair }) names the inst
 centres-intro_named_rel = The symbol I with a body's name ({ $pair }) names the instant centre of { $body } relative to { $frame }, and with two names joined by “rel” that of the first body relative to the second: the point where the relative velocity is zero.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = the pin { $joint },
+# a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
+centre-joint-revolute_fixed = the fixed pin { $joint }, a permanent centre,
+centre-joint-revolute_tied = the point { $joint } where { $body } is tied to { $frame }, a permanent centre,
 centre-joint-rolling = the contact point { $joint } (rolling without slipping),
 centre-joint-gear = the contact { $joint } of the pitch circles,
 centre-joint-prismatic = the pair is prismatic: the relative motion is a translation and the instant centre is perpendicular to the guide,
@@ -586,23 +591,23 @@ ans-pole_velocity = velocity of I along the centrodes
 centre-proportional-between = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero:
 centre-proportional-outside = by Aronhold–Kennedy it lies on the line through { $l1 } and on the line through { $l2 }, but these are one and the same line, so they do not fix it. On that line the velocities relative to { $frame } are perpendicular to the line and proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero:
 composition-slide = { $point } slides along its guide: its relative motion is along the guide, { $sym } = { $value }.
-composition-slide_seen = { $point } slides along its guide; { $body } { COUNT($body) ->
-        [many] do
-       *[one] does
-    } not turn relative to { $frame }, so all { COUNT($body) ->
-        [many] their
-       *[one] its
-    } points have the relative { WORD($kind) ->
+composition-slide_seen = { $body } { COUNT($body) ->
+        [many] slide
+       *[one] slides
+    } along { $frame } without turning relative to it, so every point of { COUNT($body) ->
+        [many] them
+       *[one] it
+    }, { $point } too, has the relative { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
     } found in “{ sec-velocities }”: { $sym } = { $value }.
-composition-slide_seen_step = { $point } slides along its guide; { $body } { COUNT($body) ->
-        [many] do
-       *[one] does
-    } not turn relative to { $frame }, so all { COUNT($body) ->
-        [many] their
-       *[one] its
-    } points have the relative { WORD($kind) ->
+composition-slide_seen_step = { $body } { COUNT($body) ->
+        [many] slide
+       *[one] slides
+    } along { $frame } without turning relative to it, so every point of { COUNT($body) ->
+        [many] them
+       *[one] it
+    }, { $point } too, has the relative { WORD($kind) ->
         [accel] acceleration
        *[speed] velocity
     } found in Step { $step }: { $sym } = { $value }.
@@ -808,6 +813,8 @@ centre-carried-slip = {" "}({ $b } { COUNT($b) ->
        *[one] does
     } not slip on { $body }, so its point { $point } has the velocity of { $body } there)
 centre-carried-between = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero:
+# the construction repeated for a body symmetric to one done: referred to (twenty-ninth round b)
+centre-carried_as = as for { $first }, it lies on the line through { $p } and { $q }, at { $dist } from { $near }:
 centre-carried-between_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in opposite senses, so the instant centre lies between them, where the speed falls to zero, at { $dist } from { $near }:
 centre-carried-outside = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero:
 centre-carried-outside_from = { $p } moves with { $k1 } about { $c1 }{ $why1 }, and { $q } with { $k2 } about { $c2 }{ $why2 }: both velocities relative to { $frame } are perpendicular to the line through { $p } and { $q }, so the instant centre lies on that line; on it the velocities are proportional to the distance from the instant centre: { $p } moves at { $vp } and { $q } at { $vq }, in the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $near }:
@@ -840,7 +847,11 @@ idle-unused = { $bodies } { $count ->
         [one] its angular velocity
        *[other] their angular velocities
     }.
-how-tangent = (it is tangent to { $a } and { $b }, and { $ca } and { $cb } have the same velocity component across it: no swinging, it translates)
+how-tangent = (it stays { WORD($way) ->
+        [vertical] vertical
+        [horizontal] horizontal
+       *[other] parallel to itself
+    }, tangent to { $a } and { $b }: it translates, and all its points have the same velocity)
 how-glides = ({ $p } and { $q } both move on the line { $line } at every instant: the body translates along it without turning)
 how-parallel_paths = ({ $p } and { $q } each stay at their wheel's radius from the flat ground, so they move on parallel straight lines at every instant: the body translates without turning)
 how-translates_always = (it translates at every instant, as the velocities showed)
@@ -936,8 +947,6 @@ check-quick = Time ratio of the quick return: { $lever } is at an end of its swi
 driver-slide = Given: the sliding velocity in the prismatic pair { $joint } is { $value }.
 driver-slide_accel = Given: the sliding acceleration in the prismatic pair { $joint } is { $value }.
 centre-line-normal = the common normal at the contact { $point } (the bodies slide on each other there: no relative velocity along it)
-# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
-ground-word = ground
 # a centre from two parallel velocities perpendicular to the line through their points (the notes' proportional construction)
 centre-parallel-between = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the instant centre, and these two have opposite senses, so the instant centre lies between them, where the speed falls to zero, at { $dist } from { $q }:
 centre-parallel-outside = the points { $p } and { $q } of { $body } move, relative to { $frame }, at { $sp } = { $vp } and { $sq } = { $vq }, both perpendicular to the line through { $p } and { $q }. Along that line the velocity varies linearly, in proportion to the distance from the instant centre, and these two have the same sense, so the instant centre lies beyond the slower one, where the speed falls to zero, at { $dist } from { $q }:

@@ -54,13 +54,16 @@ structure-subscript_rel = { $sym } es la { WORD($kind) ->
        *[rate] velocidad angular de { $body }
     } respecto de { $other } (dos nombres unidos por «rel»: el primer sólido respecto del segundo)
 structure-shaped = { $body }, { $shape } de radio { $radius }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
-structure-frame_ground = { $body }{ SAME($body, $ground) ->
-        [yes] {""}
-       *[no] {" "}({ $ground })
-    }
+# a body with several round shapes: its welded wheels, said once (twenty-ninth round b)
+structure-shaped_welded = { $body }, { $n ->
+        [2] dos
+       *[other] { $n }
+    } ruedas solidarias de radios { $radii }
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
-structure-frame_named = { $body } (fijo)
+structure-frame_named = { $body } ({ GENDER($body) ->
+        [f] fija
+       *[m] fijo
+    })
 structure-welded = { $bodies } { COUNT($bodies) ->
         [many] están { GENDER($bodies) ->
             [f] fijadas
@@ -75,13 +78,15 @@ structure-welded = { $bodies } { COUNT($bodies) ->
         }
     }; todos sus puntos tienen velocidad y aceleración nulas.
 structure-contacts_wheel = { $points_n ->
-        [one] contacto de una rueda en { $points }
-       *[other] contactos de las ruedas en { $points }
+        [one] punto de contacto bajo { $points }
+       *[other] puntos de contacto bajo { $points }
     }
 structure-contacts_rolling = { $points_n ->
         [one] punto de contacto { $points }
        *[other] puntos de contacto { $points }
     }
+# the frame's row names the parts welded to it: they are the frame (twenty-ninth round b)
+structure-frame_parts = { $body }, con { $parts }
 structure-fixed_part = { $body } (fijo a { $frame })
 structure-dof = El mecanismo tiene { $dof ->
         [one] un grado
@@ -474,6 +479,9 @@ centres-intro_named = El símbolo I, con el nombre de un sólido ({ $pair }), de
 centres-intro_named_rel = El símbolo I, con el nombre de un sólido ({ $pair }), designa el CIR de { $body } respecto de { $frame }, y, con dos nombres unidos por «rel», el del primero respecto del segundo: el punto donde la velocidad relativa es nula.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = el eje de la articulación { $joint },
+# a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
+centre-joint-revolute_fixed = el eje de la articulación fija { $joint }, un centro permanente,
+centre-joint-revolute_tied = el punto { $joint }, donde { $body } está atado a { $frame }, un centro permanente,
 centre-joint-rolling = el punto de contacto { $joint } (rodadura sin deslizamiento),
 centre-joint-gear = el contacto { $joint } de las circunferencias primitivas,
 centre-joint-prismatic = el par es prismático: el movimiento relativo es una traslación y el CIR está en la perpendicular a la guía,
@@ -558,11 +566,11 @@ ans-pole_velocity = velocidad de I a lo largo de la base y la ruleta
 centre-proportional-between = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
 centre-proportional-outside = por Aronhold–Kennedy está en la recta que pasa por { $l1 } y en la que pasa por { $l2 }, pero son una misma recta y no lo fijan. En esa recta las velocidades respecto de { $frame } son perpendiculares a ella y proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 composition-slide = { $point } desliza a lo largo de su guía: su movimiento relativo sigue la guía, { $sym } = { $value }.
-composition-slide_seen = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { WORD($kind) ->
+composition-slide_seen = { $body } desliza a lo largo de { $frame } sin girar respecto de él, así que todos sus puntos, también { $point }, tienen la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en «{ sec-velocities }»: { $sym } = { $value }.
-composition-slide_seen_step = { $point } desliza a lo largo de su guía; { $body } no gira respecto de { $frame }, así que todos sus puntos tienen la { WORD($kind) ->
+composition-slide_seen_step = { $body } desliza a lo largo de { $frame } sin girar respecto de él, así que todos sus puntos, también { $point }, tienen la { WORD($kind) ->
         [accel] aceleración
        *[speed] velocidad
     } relativa hallada en el paso { $step }: { $sym } = { $value }.
@@ -756,6 +764,8 @@ centre-carried-slip = {" "}({ $b } no { COUNT($b) ->
        *[one] desliza
     } sobre { $body }, así que su punto { $point } tiene la velocidad de { $body } en ese punto)
 centre-carried-between = { $p } se mueve con { $k1 } alrededor de { $c1 }{ $why1 }, y { $q } con { $k2 } alrededor de { $c2 }{ $why2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula:
+# the construction repeated for a body symmetric to one done: referred to (twenty-ninth round b)
+centre-carried_as = como para { $first }, está en la recta que pasa por { $p } y { $q }, a { $dist } de { $near }:
 centre-carried-between_from = { $p } se mueve con { $k1 } alrededor de { $c1 }{ $why1 }, y { $q } con { $k2 } alrededor de { $c2 }{ $why2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $near }:
 centre-carried-outside = { $p } se mueve con { $k1 } alrededor de { $c1 }{ $why1 }, y { $q } con { $k2 } alrededor de { $c2 }{ $why2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula:
 centre-carried-outside_from = { $p } se mueve con { $k1 } alrededor de { $c1 }{ $why1 }, y { $q } con { $k2 } alrededor de { $c2 }{ $why2 }: ambas velocidades respecto de { $frame } son perpendiculares a la recta que pasa por { $p } y { $q }, así que el CIR está en esa recta; en ella las velocidades son proporcionales a la distancia al CIR: { $p } se mueve con { $vp } y { $q } con { $vq }, en el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $near }:
@@ -791,7 +801,11 @@ idle-unused = { $bodies } no { $count ->
         [one] su velocidad angular
        *[other] sus velocidades angulares
     }.
-how-tangent = (es tangente a { $a } y a { $b }, y { $ca } y { $cb } tienen la misma componente de la velocidad perpendicular a él: sin movimiento pendular, se traslada)
+how-tangent = (se mantiene { WORD($way) ->
+        [vertical] vertical
+        [horizontal] horizontal
+       *[other] paralelo a sí mismo
+    }, tangente a { $a } y a { $b }: se traslada, y todos sus puntos tienen la misma velocidad)
 how-glides = ({ $p } y { $q } se mueven siempre sobre la recta { $line }: el sólido se traslada a lo largo de ella, sin girar)
 how-parallel_paths = ({ $p } y { $q } se mantienen siempre a una altura igual al radio de su rueda sobre el suelo plano, así que se mueven sobre rectas paralelas: el sólido se traslada, sin girar)
 how-translates_always = (se traslada en todo instante, como se ha visto en las velocidades)
@@ -875,8 +889,6 @@ check-quick = Razón de tiempos del retorno rápido: { $lever } está en un extr
 driver-slide = Dato: la velocidad de deslizamiento en el par prismático { $joint } es { $value }.
 driver-slide_accel = Dato: la aceleración de deslizamiento en el par prismático { $joint } es { $value }.
 centre-line-normal = la normal común en el contacto { $point } (los sólidos deslizan uno sobre otro: ninguna velocidad relativa según ella)
-# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
-ground-word = el suelo
 # un CIR a partir de dos velocidades paralelas y perpendiculares a la recta de sus puntos (la construcción proporcional de los apuntes)
 centre-parallel-between = los puntos { $p } y { $q } de { $body } se mueven, respecto de { $frame }, con { $sp } = { $vp } y { $sq } = { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen sentidos opuestos, así que el CIR está entre ambos, donde la velocidad se anula, a { $dist } de { $q }:
 centre-parallel-outside = los puntos { $p } y { $q } de { $body } se mueven, respecto de { $frame }, con { $sp } = { $vp } y { $sq } = { $vq }, ambas perpendiculares a la recta que pasa por { $p } y { $q }. A lo largo de esa recta la velocidad varía linealmente, proporcional a la distancia al CIR, y estas dos tienen el mismo sentido, así que el CIR está más allá del más lento, donde la velocidad se anula, a { $dist } de { $q }:

@@ -54,11 +54,11 @@ structure-subscript_rel = { $sym } { $body } solidoaren { WORD($kind) ->
        *[rate] abiadura angeluarra
     } da { $other } solidoarekiko («rel» hitzaz lotutako bi izen: lehen solidoa bigarrenarekiko)
 structure-shaped = { $body }, { $radius } erradioko { $shape }
-# the fixed body named after a part of the ground: the ground's word (ground-word) beside it, unless the name already says it (twenty-fourth round a)
-structure-frame_ground = { $body }{ SAME($body, $ground) ->
-        [yes] {""}
-       *[no] {" "}({ $ground })
-    }
+# a body with several round shapes: its welded wheels, said once (twenty-ninth round b)
+structure-shaped_welded = { $body }, { $radii } erradioko { $n ->
+        [2] bi
+       *[other] { $n }
+    } gurpil solidario
 # the fixed body with no shape: its own name, marked fixed; the text names it so wherever it is a reference (twenty-seventh round e)
 structure-frame_named = { $body } (finkoa)
 structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n ->
@@ -69,13 +69,15 @@ structure-welded = { $bodies } { $frame } solidoari zurrunki lotuta { $bodies_n 
        *[other] haien
     } puntu guztien abiadura eta azelerazioa nuluak dira.
 structure-contacts_wheel = { $points_n ->
-        [one] { $points } (gurpil baten kontaktu-puntua)
-       *[other] { $points } (gurpilen kontaktu-puntuak)
+        [one] { $points } puntuaren azpiko kontaktu-puntua
+       *[other] { $points } puntuen azpiko kontaktu-puntuak
     }
 structure-contacts_rolling = { $points_n ->
         [one] { $points } (kontaktu-puntua)
        *[other] { $points } (kontaktu-puntuak)
     }
+# the frame's row names the parts welded to it: they are the frame (twenty-ninth round b)
+structure-frame_parts = { $body }, { $parts } barne
 structure-fixed_part = { $body } ({ $frame } solidoari zurrunki lotuta: finkoa)
 structure-dof = Mekanismoak { $dof ->
         [one] askatasun-gradu bat du
@@ -356,7 +358,7 @@ v-intro = Ekuazio bektorial bakoitza apunteetan bezala idazten da: M: modulua ez
 a-intro = Abiadurak ezagunak direnez, termino normal guztiak eta Coriolisen termino guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_relative = Abiadurak ezagunak direnez, termino normal guztiak ezagunak dira; ezezagunak termino tangentzialak eta erlatiboak dira.
 a-intro_normal = Abiadurak ezagunak direnez, termino normalak ezagunak dira; ezezagunak termino tangentzialak dira.
-eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira; beraz, haien bi ? ikurrak ezezagun bakarra dira.
+eq-shared_rate = { $terms } terminoek ezezagun bakarra dute, { $rate }: haien moduluak { $mags } dira; beraz, haien bi ? ikurrek ezezagun bakar bat adierazten dute, { $rate }.
 a-named = Formula bat garatuta irakurtezina litzatekeen lekuan, «{ sec-velocities }» atalean aurkitutako abiadura angeluarrak izenez idazten dira: { $name } { $body } solidoaren ω-rako, eta horrela solido bakoitzerako.
 driver-omega = Datua: { $sym } = { $value }.
 driver-omega_sense = Datua: { $sym } = { $value }, { $faster ->
@@ -424,6 +426,9 @@ centres-intro_named = I ikurrak, solido baten izena azpiindize duela, solido hor
 centres-intro_named_rel = I ikurrak, solido baten izena azpiindize duela, solido horren biraketa-zentro instantaneoa (BZI) adierazten du { $frame } solidoarekiko, hau da, { $frame } solidoarekiko abiadura nulua duen puntua (adibidez, { $pair } { $body } solidoarena da); «rel» hitzaz lotutako bi izenekin, lehen solidoarena bigarrenarekiko.
 centre-line = { $centre }: { $why } { $where }
 centre-joint-revolute = { $joint } giltzaduraren ardatza,
+# a pin to the fixed body: a permanent centre; a strand's, where it is tied (twenty-ninth round b)
+centre-joint-revolute_fixed = { $joint } ardatza, zentro iraunkorra,
+centre-joint-revolute_tied = { $joint } puntua, { $body } { $frame } solidoari lotuta dagoen lekua, zentro iraunkorra,
 centre-joint-rolling = { $joint } kontaktu-puntua (irristatu gabeko errodadura),
 centre-joint-gear = zirkunferentzia primitiboen { $joint } kontaktua,
 centre-joint-prismatic = lotura prismatikoa da: mugimendu erlatiboa translazio bat da eta BZIa gidaren perpendikularrean dago,
@@ -505,11 +510,11 @@ ans-pole_velocity = I zentroaren abiadura polodietan zehar
 centre-proportional-between = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian:
 centre-proportional-outside = Aronhold–Kennedyren teoremaz, { $l1 } zentroetatik pasatzen den zuzenean eta { $l2 } zentroetatik pasatzen denean dago, baina zuzen bera dira eta ez dute finkatzen. Zuzen horretan { $frame } solidoarekiko abiadurak zuzenarekiko perpendikularrak eta BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian:
 composition-slide = { $point } puntua bere gidan zehar irristatzen da: haren mugimendu erlatiboa gidaren norabidean dago, { $sym } = { $value }.
-composition-slide_seen = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek «{ sec-velocities }» atalean aurkitutako { WORD($kind) ->
+composition-slide_seen = { $body } solidoa { $frame } solidoan zehar irristatzen da, harekiko biratu gabe; beraz, haren puntu guztiek, { $point } puntuak ere, «{ sec-velocities }» atalean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboa dute: { $sym } = { $value }.
-composition-slide_seen_step = { $point } puntua bere gidan zehar irristatzen da; { $body } solidoa ez da biratzen { $frame } solidoarekiko, eta, beraz, haren puntu guztiek { $step }. urratsean aurkitutako { WORD($kind) ->
+composition-slide_seen_step = { $body } solidoa { $frame } solidoan zehar irristatzen da, harekiko biratu gabe; beraz, haren puntu guztiek, { $point } puntuak ere, { $step }. urratsean aurkitutako { WORD($kind) ->
         [accel] azelerazio
        *[speed] abiadura
     } erlatiboa dute: { $sym } = { $value }.
@@ -676,9 +681,11 @@ centre-line-moves = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ 
 centre-line-rolls = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $roller } solidoa ez da irristatzen { $on } solidoaren gainean: { $b } solidoaren { $point } puntuak { $body } solidoaren abiadura du, eta { $body } solidoa { $pivot } puntuaren inguruan biratzen da)
 centre-line-rolls_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $roller } solidoa ez da irristatzen { $on } solidoaren gainean: { $b } solidoaren { $point } puntuak traslatzen den { $body } solidoaren abiadura du)
 centre-line-moves_still = { $point } puntuan { $v } abiadurarekiko perpendikularra ({ $point } puntua traslatzen den { $body } solidoarekin mugitzen da)
-centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra ({ $pivot }′ puntuan, { $pivot } puntutik gidara doan perpendikularraren oinean, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa: { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
+centre-line-guide = { $pivot } puntuan gidarekiko perpendikularra ({ $pivot }′ da { $pivot } puntutik gidara doan perpendikularraren oina. Han, { $body } solidoarekiko abiadura erlatiboa gidarekiko paraleloa da, eta arrastrekoa { $pivot }{ $pivot }′ zuzenarekiko perpendikularra, hau da, hori ere gidarekiko paraleloa; beraz, { $b } solidoaren { $pivot }′ puntuko abiadura gidaren norabidean dago)
 centre-carried-slip = {" "}({ $b } solidoa ez da irristatzen { $body } solidoaren gainean: bere { $point } puntuak { $body } solidoaren abiadura du bertan)
 centre-carried-between = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian:
+# the construction repeated for a body symmetric to one done: referred to (twenty-ninth round b)
+centre-carried_as = { $first } solidoan bezala, { $p } eta { $q } puntuetatik pasatzen den zuzenean dago, { $near } puntutik { $dist } distantziara:
 centre-carried-between_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, aurkako noranzkoetan; beraz, BZIa bien artean dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
 centre-carried-outside = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian:
 centre-carried-outside_from = { $p } puntua { $k1 } solidoarekin mugitzen da { $c1 } puntuaren inguruan{ $why1 }, eta { $q } puntua { $k2 } solidoarekin { $c2 } puntuaren inguruan{ $why2 }: bi abiadurak, { $frame } solidoarekiko, { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira; beraz, BZIa zuzen horretan dago, eta bertan abiadurak BZIrainoko distantziarekiko proportzionalak dira: { $p } puntuak { $vp } abiadura du eta { $q } puntuak { $vq }, noranzko berean; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian, { $near } puntutik { $dist } distantziara:
@@ -711,7 +718,11 @@ idle-unused = { $bodies } ez { $count ->
         [one] haren abiadura angeluarra
        *[other] haien abiadura angeluarrak
     } behar.
-how-tangent = ({ $a } eta { $b } solidoekiko ukitzailea da, eta { $ca } eta { $cb } puntuek abiaduraren osagai bera dute haren perpendikularrean: ez dago mugimendu pendularrik, traslatzen da)
+how-tangent = ({ WORD($way) ->
+        [vertical] bertikal
+        [horizontal] horizontal
+       *[other] bere buruarekiko paralelo
+    } mantentzen da, { $a } eta { $b } solidoekiko ukitzaile: traslatzen da, eta bere puntu guztiek abiadura bera dute)
 how-glides = ({ $p } eta { $q } puntuak { $line } zuzenean zehar mugitzen dira une oro: solidoa zuzen horretan zehar traslatzen da, biratu gabe)
 how-parallel_paths = ({ $p } eta { $q } puntuetako bakoitza bere gurpilaren erradioaren altueran dago lur lautik; beraz, zuzen paraleloetan mugitzen dira une oro: solidoa traslatzen da, biratu gabe)
 how-translates_always = (une oro traslatzen da, abiaduretan ikusi den bezala)
@@ -795,8 +806,6 @@ check-quick = Itzulera azkarraren denbora-erlazioa: { $lever } solidoa bere kulu
 driver-slide = Datua: { $joint } lotura prismatikoko irristatze-abiadura { $value } da.
 driver-slide_accel = Datua: { $joint } lotura prismatikoko irristatze-azelerazioa { $value } da.
 centre-line-normal = { $point } kontaktuko normal komuna (solidoak elkarren gainean irristatzen dira: ez dago abiadura erlatiborik haren norabidean)
-# the ground as the reference of a motion, when the model names the ground after a part of it (a fixed pulley, a track)
-ground-word = lurra
 # zentro bat, bi puntuen zuzenarekiko perpendikularrak diren bi abiadura paralelotatik (apunteen eraikuntza proportzionala)
 centre-parallel-between = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, BZIrainoko distantziarekiko proportzionala, eta bi hauek aurkako noranzkoak dituzte; beraz, BZIa bien artean dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:
 centre-parallel-outside = { $body } solidoaren { $p } eta { $q } puntuek, { $frame } solidoarekiko, { $sp } = { $vp } eta { $sq } = { $vq } abiadurak dituzte, eta biak { $p } eta { $q } puntuetatik pasatzen den zuzenarekiko perpendikularrak dira. Zuzen horretan abiadura linealki aldatzen da, BZIrainoko distantziarekiko proportzionala, eta bi hauek noranzko bera dute; beraz, BZIa motelenaren haratago dago, abiadura nulua den tokian, { $q } puntutik { $dist } distantziara:

@@ -603,8 +603,6 @@ class Renderer(ABC):
     # the model's words and notation -----------------------------------------------------------
     def called(self, n: Name) -> str:
         """A body's name in the reader's language (the model's `names`), else the model's."""
-        if n.kind == "body" and n.reference and self.doc.ground_part and self.cat.has("ground.word"):
-            return self.cat.get("ground.word")           # the reference, named as the notes name it
         if n.kind == "body":
             return self.wording.body(n.text, self.lang)
         if n.kind == "joint":                            # the model's name, else its point or bodies
@@ -1118,7 +1116,10 @@ class Renderer(ABC):
         if c.how == "check":
             return self.message(Msg("centre.check", self.field_args(c, name)))
         if c.how == "joint":
-            why = Msg(f"centre.joint.{c.joint_type}", {"joint": Name(c.via[0], "joint")})
+            moving = b if a == self.doc_frame() else a
+            why = Msg(f"centre.joint.{c.joint_type}", {"joint": Name(c.via[0], "joint"),
+                                                        "body": Name(moving, "body"),
+                                                        "frame": self.frame_name(a if moving == b else b)})
         elif c.how == "weld":
             assert c.same is not None, "a weld's note has the centre it shares (centres.weld)"
             x, other = c.same["pair"]
@@ -1206,12 +1207,30 @@ class Renderer(ABC):
         args = {"l1": lines[0], "l2": lines[1], "frame": self.frame_name(a), "p": names[0], "q": names[1],
                 "vp": Value(vp, "speed"), "vq": Value(vq, "speed")}
         if c.pivots:        # the notes' words: each point turns with a body about its centre (C5-1.4)
+            first = self.carried_before(c)
+            if first is not None:
+                return Msg("centre.carried_as", {"first": Name(first, "body"), "p": names[0], "q": names[1],
+                                                 "near": Name(c.near), "dist": Value(c.distance, "len")})
             key = f"centre.carried.{c.side}" + ("_from" if c.near and c.distance is not None else "")
             return Msg(key, {**args, "k1": Name(c.via[0], "body"), "k2": Name(c.via[1], "body"),
                              "c1": c.pivots[0], "c2": c.pivots[1], "near": Name(c.near),
                              "dist": Value(c.distance, "len"),
                              "why1": self.slip(c, 0), "why2": self.slip(c, 1)})
         return Msg(f"centre.proportional.{c.side}", args)
+
+    def carried_before(self, c: CentreNote) -> Optional[str]:
+        """The body whose centre the page found by the very construction of `c` before (C5-1.4's
+        planet 1, for planets 2 and 3: the same carrier and ring, pivots, side and distance),
+        else None and `c` is recorded as the first. A construction repeated for a body
+        symmetric to one done is said once and referred to, "as for *planet 1*, … at 2·r/5 from
+        A2" (twenty-ninth round (b): steps 5 and 6 repeated step 3's paragraph word for word)."""
+        if not (c.near and c.distance is not None):
+            return None
+        said = self.__dict__.setdefault("_carried", {})
+        key = (c.side, tuple(c.via), tuple(map(str, c.pivots)), str(c.distance), tuple(map(str, c.slips)) != ())
+        body = c.pair[1]
+        first = said.setdefault(key, body)
+        return first if first != body else None
 
     @staticmethod
     def slip(c: CentreNote, i: int) -> Any:
