@@ -84,11 +84,6 @@ def test_no_name_or_value_lies_on_hatching(name, lang):
 # chain's loop, and the loop's inside (between the runs: the frame's bars, v_H, H, C, T1, T2)
 # holds no name, at the page's figure's size or at the drive drawn larger (its `draw_at`)
 LOOPED = {"seed_c5_e6_bicycle": ({"sprocket", "chainring"}, "chain")}
-# (twenty-ninth round (g): the drive drawn larger, the chainring's name, led from its disc out of
-# the chain's loop, may also cross the frame's bar that starts at the chainring's centre C and
-# runs inside its disc; in English, the longest name, the place above the front part is the
-# only one left; docs/explain.md, "Twenty-ninth round (g)")
-PINNED = {"seed_c5_e6_bicycle": {"chainring": "frame"}}
 
 
 @over(name=NOTES_SEEDS, lang=LANGS)
@@ -99,8 +94,7 @@ def test_no_way_to_a_label_crosses_another_bodys_bar(name, lang):
     inside, loop = LOOPED.get(name, (set(), None))
     names = _body_names(name, lang)
     allowed = {f"{names[b]}: leader across {loop}'s bar" for b in inside} | \
-        {f"{names[b]}: link across {loop}'s bar" for b in inside} | \
-        {f"{names[b]}: leader across {bar}'s bar" for b, bar in PINNED.get(name, {}).items()}
+        {f"{names[b]}: link across {loop}'s bar" for b in inside}
     bad = [x for fig in drawn(name, lang) for x in faults(fig)["bar"] if x not in allowed]
     assert not bad, "; ".join(bad)
 
