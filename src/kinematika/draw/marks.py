@@ -141,13 +141,15 @@ def _named_once(ctx: Context, p: np.ndarray, names: str) -> bool:
     centres' colour, set to the side by the placer as a point's letter is, instead of "J" and
     "I_wheels" jammed on one dot (C5-E.1's contact J at the top of the track, C5-E.4's P on the
     upper wheel; issue 30, twenty-ninth round (g)). The point's label keeps its gid (it still
-    stands for the point); the centres' ring is drawn as before."""
+    stands for the point) and is placed as early as the centre's was (its priority); the
+    centres' ring is drawn as before."""
     tol = 1e-6 * ctx.size
     for m in ctx.marks:
         if m.kind == "text" and str(m.gid).startswith(("point:", "contact:")) and \
                 float(np.linalg.norm(np.asarray(m.points[0], dtype=float) - p)) <= tol:
             m.text = f"{names} = {m.text}"
             m.colour = COLOURS["icr"]
+            m.priority = min(m.priority, 2)         # placed when the centre's label was
             return True
     return False
 
