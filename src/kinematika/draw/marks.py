@@ -129,7 +129,7 @@ def _mark(ctx: Context, group: list[MarkView]) -> None:
     ctx.avoid(p, weight=3.0, radius=5.0)
     if mark.kind == "contact" and p is not None and labelled_at(ctx, p, contacts=True):
         return          # the point or the page's contact letter is there already: one place, one letter
-    if mark.kind == "icr" and _named_once(ctx, p, group_label(group)):
+    if mark.kind == "icr" and p is not None and _named_once(ctx, p, group_label(group)):
         return
     ctx.label(p, group_label(group), COLOURS[mark.kind], 2, _key(group), layer="centres",
               group=f"mark:{mark.key}", radius=5.5)
