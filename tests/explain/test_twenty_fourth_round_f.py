@@ -32,10 +32,13 @@ from .helpers import LANGS, NOTES_SEEDS, over, recorded_pages
 # radii: the wheel's quadrants are narrower than its name, and outside the wheel the chain's
 # and chainring's names take the room above the drive)
 # (since the twenty-eighth round (c) the sun's centre is at O too: the three centres' label, on
-# two lines, keyed by its gid, may cross the carrier's arms and the sun's radii, for the same reason)
+# two lines, keyed by its gid, may cross the carrier's arms and the sun's radii, for the same reason;
+# since the twenty-ninth round (g) the three are written into O's label, "… = O", a point's)
 KNOWN: dict[tuple[str, str], set] = {
-    ("seed_c5_1_4_epicyclic", "centre:ground-carrier+centre:ground-sun+centre:ground-ring"): {"carrier", "sun"},
     **{("seed_c5_e6_bicycle", word): {"rear"} for word in ("sprocket", "piñón", "pinyó", "pinoia")},
+    # twenty-ninth round (g): the drive drawn 1.4 times as large, the chainring's longer names
+    # (ca, eu) cross the rear wheel's lines in layouts tried while the figure's limits grow
+    **{("seed_c5_e6_bicycle", word): {"rear"} for word in ("plat amb els pedals", "plater pedalduna")},
 }
 
 

@@ -245,7 +245,7 @@ def test_c5_1_5_strand_1_hangs_from_the_ceiling():
 def test_c5_e6_the_crank_runs_from_the_axle_to_the_pedal():
     """C5-E.6's chainring is a disc (centre C, radius R) with its crank to the pedal P, L below
     C: its bar is drawn from C to P, never from the chain's contact T2 on the rim (R above C)."""
-    p = {"C": (0.6, 0.35 + 0.05 - 0.1), "P": (0.6, 0.35 + 0.05 - 0.1 - 0.15)}      # draw_at (b, R_roda + r - R (- L))
+    p = {"C": (0.7, 0.35 + 0.07 - 0.14), "P": (0.7, 0.35 + 0.07 - 0.14 - 0.18)}      # draw_at (b, R_roda + r - R (- L))
     for _, marks, _, _ in figures("seed_c5_e6_bicycle", "en"):
         bars = [np.asarray(m.points, float) for m in marks if m.kind == "line" and m.gid == "body:chainring"]
         assert len(bars) == 1

@@ -129,8 +129,29 @@ def _mark(ctx: Context, group: list[MarkView]) -> None:
     ctx.avoid(p, weight=3.0, radius=5.0)
     if mark.kind == "contact" and p is not None and labelled_at(ctx, p, contacts=True):
         return          # the point or the page's contact letter is there already: one place, one letter
+    if mark.kind == "icr" and p is not None and _named_once(ctx, p, group_label(group)):
+        return
     ctx.label(p, group_label(group), COLOURS[mark.kind], 2, _key(group), layer="centres",
               group=f"mark:{mark.key}", radius=5.5)
+
+
+def _named_once(ctx: Context, p: np.ndarray, names: str) -> bool:
+    """Whether the instant centres `names` at `p` are written into the letter of the named
+    point (or the page's contact) already labelled there: one label "I_wheels = J", in the
+    centres' colour, set to the side by the placer as a point's letter is, instead of "J" and
+    "I_wheels" jammed on one dot (C5-E.1's contact J at the top of the track, C5-E.4's P on the
+    upper wheel; issue 30, twenty-ninth round (g)). The point's label keeps its gid (it still
+    stands for the point) and is placed as early as the centre's was (its priority); the
+    centres' ring is drawn as before."""
+    tol = 1e-6 * ctx.size
+    for m in ctx.marks:
+        if m.kind == "text" and str(m.gid).startswith(("point:", "contact:")) and \
+                float(np.linalg.norm(np.asarray(m.points[0], dtype=float) - p)) <= tol:
+            m.text = f"{names} = {m.text}"
+            m.colour = COLOURS["icr"]
+            m.priority = min(m.priority, 2)         # placed when the centre's label was
+            return True
+    return False
 
 
 def _far_mark(ctx: Context, group: list[MarkView], point: np.ndarray) -> None:

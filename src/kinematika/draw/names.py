@@ -16,6 +16,7 @@ from ..numerals import DECIMAL, decimal_sign, function_names, separator, supersc
 
 _SIMPLE = re.compile(r"^[\w.,'·’ -]+$")     # letters of any script (mathtext sets them), digits, _ . , ' · ’ - and spaces
 FORMULA_CHARS = 24            # longer formulas (as plain text) are shown by their value
+ANSWER_CHARS = 32             # an asked vector's formula (the page's answer) is kept up to this length
 
 
 def body_numbers(model: Any) -> dict[str, int]:
@@ -263,16 +264,18 @@ def pair_symbol(letter: str, model: Any, a: str, b: str, lang: Optional[str] = N
     return subscript(letter, pair_tag(model, a, b, lang))
 
 
-def formula(expr: Any, value: float, lang: Optional[str] = None, spelt: Optional[dict] = None) -> str:
+def formula(expr: Any, value: float, lang: Optional[str] = None, spelt: Optional[dict] = None,
+            chars: int = FORMULA_CHARS) -> str:
     """A short formula in mathtext ($2 r w^{2}$), else the value (`≈ 3.08`); numbers as
     `lang` writes them (`value_text`); the symbols of `spelt` (a parameter -> how the model
-    writes it, `w0` -> `omega_0`) written that way (ω₀)."""
+    writes it, `w0` -> `omega_0`) written that way (ω₀). `chars`: the longest formula (as
+    plain text) written; an asked vector's is `ANSWER_CHARS` (`results.magnitude_text`)."""
     from sympy import Symbol, latex
 
     from ..report.values import written_form, written_latex
 
     tidied = written_form(expr)          # the form the text writes (`written_form`)
-    if len(str(tidied).replace("Abs", "")) > FORMULA_CHARS:       # |x| is as short as (x)
+    if len(str(tidied).replace("Abs", "")) > chars:       # |x| is as short as (x)
         return f"≈ {value_text(value, lang)}"
     known = spelt or {}
     names = {s: latex(Symbol(known[s.name])) for s in getattr(tidied, "free_symbols", ()) if s.name in known}

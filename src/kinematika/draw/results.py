@@ -16,8 +16,8 @@ from ..questions import QUESTIONS, answer
 from .options import DrawOptions
 from .words import word
 from .geometry import perpendicular
-from .names import (bare, body_labels, contact_name, equation, formula, geometric_symbol, pair_symbol,
-                    point_symbol, subscript, value_text)
+from .names import (ANSWER_CHARS, FORMULA_CHARS, bare, body_labels, contact_name, equation, formula,
+                    geometric_symbol, pair_symbol, point_symbol, subscript, value_text)
 from .scene import (AxisView, CurvatureView, KennedyLine, MarkView, Numbers, Scene, VectorView, drawing_values,
                     vector_label)
 
@@ -40,7 +40,9 @@ def add_results(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> N
 # vectors ---------------------------------------------------------------------------------
 def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
     tol = 1e-9 * scene.size
+    arrows = drawn_questions(sol.model).arrows
     for kind in KINDS:
+        asked = {(q.target, q.relative_to) for q in arrows[kind]}
         flag = options.velocities if kind == "velocity" else options.accelerations
         for ref, rel in vector_targets(sol, options, kind, flag):
             value = (sol.velocity if kind == "velocity" else sol.acceleration)(ref, rel)
@@ -54,9 +56,9 @@ def _vectors(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None
                    for v in scene.vectors):
                 continue      # the same vector of a point shared by two bodies
             magnitude = float(np.linalg.norm(vec))
+            text = magnitude_text(sol, value, magnitude, options.lang, (ref, rel) in asked)
             rel = rel if rel != sol.model.frame else None
-            scene.vectors.append(VectorView(kind, str(ref), label, origin, num.proj(vec), magnitude,
-                                            magnitude_text(sol, value, magnitude, options.lang), rel))
+            scene.vectors.append(VectorView(kind, str(ref), label, origin, num.proj(vec), magnitude, text, rel))
 
 
 def _coincident(scene: Scene, sol: Any, options: DrawOptions, num: Numbers) -> None:
@@ -206,15 +208,20 @@ def _moving_points(sol: Any) -> list[tuple[PointRef, None]]:
     return [(ref, rel) for ref, rel, _ in _unique(moving, key=lambda item: item[2])]
 
 
-def magnitude_text(sol: Any, value: tuple, magnitude: float, lang: Optional[str] = None) -> str:
+def magnitude_text(sol: Any, value: tuple, magnitude: float, lang: Optional[str] = None,
+                   answer: bool = False) -> str:
     """The magnitude as shown: 3 significant digits, or a short exact formula (symbolic);
-    numbers as `lang` writes them (`names.value_text`)."""
+    numbers as `lang` writes them (`names.value_text`). The `answer` of an asked vector is
+    written with its formula up to `names.ANSWER_CHARS` characters, not `FORMULA_CHARS`: the
+    figure's arrow of the asked v_P carries the page's answer beside it, as the teacher
+    writes it (C5-E.6's v_P = v(R·R_roda − L·r)/(R·R_roda), shown by its name alone before;
+    issue 30, twenty-ninth round (g))."""
     if magnitude == 0:
         return "0"
     if not sol.symbolic:
         return value_text(magnitude, lang)
     return formula(signed_bars(sol.norm(value), drawing_values(sol.inst)), magnitude, lang,
-                   sol.model.wording.parameter_symbols(lang))
+                   sol.model.wording.parameter_symbols(lang), ANSWER_CHARS if answer else FORMULA_CHARS)
 
 
 def signed_bars(expr: Any, values: dict) -> Any:
