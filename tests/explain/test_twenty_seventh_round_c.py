@@ -82,8 +82,10 @@ def test_no_name_or_value_lies_on_hatching(name, lang):
 # bodies inside another body's closed loop, whose names' leaders cross it wherever the names go
 # (docs/explain.md, "Twenty-eighth round (g)"): C5-E.6's sprocket and chainring lie inside the
 # chain's loop, and the loop's inside (between the runs: the frame's bars, v_H, H, C, T1, T2)
-# holds no name, at the page's figure's size or at the drive drawn larger (its `draw_at`)
-LOOPED = {"seed_c5_e6_bicycle": ({"sprocket", "chainring"}, "chain")}
+# holds no name, at the page's figure's size or at the drive drawn larger (its `draw_at`); the
+# value of a velocity drawn inside the loop (v_H at the sprocket's hub, beside the chain's
+# upper run since the twenty-ninth round (e) keeps arrows off lines) crosses the loop likewise
+LOOPED = {"seed_c5_e6_bicycle": ({"sprocket", "chainring"}, "chain", {"H"})}
 
 
 @over(name=NOTES_SEEDS, lang=LANGS)
@@ -91,11 +93,13 @@ def test_no_way_to_a_label_crosses_another_bodys_bar(name, lang):
     """No leader, and no short way from a name or a value to the anchor it is set beside,
     crosses a bar of another body (a chassis, an arm, a belt's or a chain's run); but the
     name of a body inside another's closed loop (`LOOPED`) crosses that loop's bar."""
-    inside, loop = LOOPED.get(name, (set(), None))
+    inside, loop, points = LOOPED.get(name, (set(), None, set()))
     names = _body_names(name, lang)
     allowed = {f"{names[b]}: leader across {loop}'s bar" for b in inside} | \
         {f"{names[b]}: link across {loop}'s bar" for b in inside}
-    bad = [x for fig in drawn(name, lang) for x in faults(fig)["bar"] if x not in allowed]
+    values = tuple(f"$v_{{\\mathrm{{{p}}}}}$ = " for p in points)      # a value's text: "$v_{\mathrm{H}}$ = $v$"
+    bad = [x for fig in drawn(name, lang) for x in faults(fig)["bar"]
+           if x not in allowed and not (values and x.startswith(values) and x.endswith(f"across {loop}'s bar"))]
     assert not bad, "; ".join(bad)
 
 

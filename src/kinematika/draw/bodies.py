@@ -303,7 +303,7 @@ def cable_wrap(scene: Any, body: BodyView, s: ShapeView) -> Optional[tuple[np.nd
     centre, tol = s.centre(), 1e-6 * max(s.radius, 1e-300)
     ends = []
     for j in scene.joints:
-        if j.contact is None or body.name not in (j.a, j.b) or j.kind.name != "rolling":
+        if j.contact is None or body.name not in (j.a, j.b) or not j.kind.rolls or j.kind.pitch:
             continue
         other = scene.bodies.get(j.b if j.a == body.name else j.a)
         if not strand(scene, other):

@@ -173,15 +173,15 @@ def _from_data(ctx: Ctx, note: CentreNote) -> bool:
     return all(k in given for k in note.via)
 
 
-def _joint_said(ctx: Ctx, pair: tuple, kind: str) -> str:
+def _joint_said(ctx: Ctx, pair: tuple, kind: Any) -> str:
     """The joint's kind as the centre's line says it. A pin to the fixed body is a fixed pivot,
     a permanent centre (the notes' point in C5-E.2: "I_braç is the axis O, a permanent
     centre"), "revolute_fixed"; a strand pinned there (a straight body that a pulley rolls on)
     is tied to it, and its centre is the point where it is tied (C5-1.1: "el punt on estan
     agafats del sostre"), "revolute_tied" — never "the axis of the hinge G1" (twenty-ninth
     round (b))."""
-    if kind != "revolute" or not any(ctx.fixed(b) for b in pair) or all(ctx.fixed(b) for b in pair):
-        return kind
+    if kind.centre is not Centre.PIN or not any(ctx.fixed(b) for b in pair) or all(ctx.fixed(b) for b in pair):
+        return kind.name
     moving = next(b for b in pair if not ctx.fixed(b))
     straight = any(type(s).__name__ == "Line" for s in ctx.model.bodies[moving].shapes)
     rolled = any(j.kind.rolls and moving in (j.a, j.b) for j in ctx.model.joints)
@@ -201,7 +201,7 @@ def _notes(ctx: Ctx) -> tuple[dict, list, set]:
         c = found[key]
         note = CentreNote(c.pair, _clean(ctx, c.value), c.how, list(c.via))
         if c.how == "joint":
-            note.joint_type = _joint_said(ctx, c.pair, ctx.model.joint(c.via[0]).kind.name)
+            note.joint_type = _joint_said(ctx, c.pair, ctx.model.joint(c.via[0]).kind)
         elif c.how == "weld":
             weld = ctx.model.joint(c.via[0])
             welded = next(b for b in c.pair if b in (weld.a, weld.b) and b != c.via[1])

@@ -68,8 +68,8 @@ def kind_key(j: Any, frame: str) -> str:
 
 
 # the letter a lower pair's kind is written with in the notes (the R of "RRR", the P of "RRP"),
-# and the key of its name without it
-PAIR_LETTER = {"revolute": ("R", "joint.revolute_word"), "prismatic": ("P", "joint.prismatic_word")}
+# by the chain it is in, and the key of its name without it
+PAIR_LETTER = {Chain.R: ("R", "joint.revolute_word"), Chain.P: ("P", "joint.prismatic_word")}
 
 
 def joint_kind(ctx: Any, j: Any) -> Any:
@@ -81,7 +81,7 @@ def joint_kind(ctx: Any, j: Any) -> Any:
     from .document import msg
 
     key = kind_key(j, ctx.frame)
-    pair = PAIR_LETTER.get(key)
+    pair = PAIR_LETTER.get(j.kind.chain) if key == j.kind.name else None
     if pair is not None and pair[0] in _symbols(ctx):
         return msg(pair[1])
     return msg(f"joint.{key}")
