@@ -192,3 +192,14 @@ def test_c7_no_parallel_sign_in_the_joints_table(name: str, lang: str) -> None:
     if (name, lang) in GUIDES:
         assert GUIDES[(name, lang)] in page
     assert "(a point on a fixed line)" not in page
+
+
+@over(lang=LANGS)
+def test_c7_a_guides_angle_is_its_directions_own(lang: str) -> None:
+    """C5-1.3's sleeve guides the bar along (3, −1): its angle to the horizontal is
+    atan(−1/3) = −18.43°, the direction's own, never the line's 161.6° (180° − 18.43°) written
+    beside the vector (the seventh reading: "(3; −1), a 161,6°" contradicts itself)."""
+    page = plain_page("seed_c5_1_3_bar_in_sleeve", lang)
+    assert "161" not in page
+    assert ("−18.4°" if lang == "en" else "−18,4°") in page
+

@@ -244,7 +244,9 @@ def _where(ctx: Ctx, j) -> Inline | Msg | str:
 
 def along_words(ctx: Ctx, vec: tuple) -> Msg:
     """A guide's direction as a teacher says it: a horizontal or a vertical line, or the
-    direction and its angle to the horizontal, (1, 1) at 45° (the angle when numbers give it)."""
+    direction and its angle to the horizontal, (1, 1) at 45° (the angle when numbers give it):
+    the vector's own angle, atan2(y, x) in (−180°, 180°], so that the two agree — (3, −1) at
+    −18.4°, never the line's 161.6° beside it (the seventh reading, C5-1.3)."""
     import math
 
     try:
@@ -256,7 +258,7 @@ def along_words(ctx: Ctx, vec: tuple) -> Msg:
         return msg("along.horizontal")
     if abs(x) < 1e-9 * size:
         return msg("along.vertical")
-    deg = math.degrees(math.atan2(y, x)) % 180.0
+    deg = math.degrees(math.atan2(y, x))
     return msg("along.angle", vec=Value(vec, ""), deg=Value(round(deg, 1) if abs(deg - round(deg)) > 1e-6 else round(deg), ""))
 
 
