@@ -178,7 +178,7 @@ def arrow_mark(arrow: Arrow, gid: str, shift: float = 0.0) -> dict:
     through the sleeve, C5-1.5's v_K and v_T2 on their strands, C5-2.2's v_O and v_P on the
     chassis; issue 30, twenty-seventh round (f)); the casing parts the arrow from the bar
     under it, as a draughtsman leaves a gap, and keeps both seen."""
-    return dict(head="-|>", size=15, width=2.2, colour=KIND_COLOURS[arrow.view.kind],
+    return dict(head="-|>", size=15, width=WIDTH, colour=KIND_COLOURS[arrow.view.kind],
                 zorder=10 if arrow.view.kind == "velocity" else 9, gid=gid, shift=shift, halo=HALO)
 
 
